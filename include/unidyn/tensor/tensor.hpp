@@ -65,8 +65,10 @@ struct SpectralDecomposition {
 };
 SpectralDecomposition spectral_decomposition(const Tensor& A_symmetric);
 
-// A a · a > 0 for every a ≠ 0 (symmetric part checked, relative tolerance on the eigenvalues).
-bool is_positive_definite(const Tensor& A, double relative_tolerance = 0.0);
+// A a · a > 0 for every a ≠ 0: the smallest eigenvalue of the symmetric part exceeds
+// relative_tolerance × the largest in magnitude (the default keeps round-off of a semidefinite
+// tensor from deciding the answer).
+bool is_positive_definite(const Tensor& A, double relative_tolerance = 1e-12);
 
 // ‖QᵀQ − I‖ ≤ tol and det Q > 0: a proper-orthogonal tensor, hence a rotation (Euler's theorem,
 // §6.6).
