@@ -2,12 +2,19 @@
 #include "unidyn/rotation/euler_angles.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include "unidyn/rotation/axis_angle.hpp"
 #include "unidyn/rotation/errors.hpp"
 
 namespace unidyn {
 namespace {
+
+// atan2 returns −π for a second argument < 0 and a first argument −0 or a tiny negative number;
+// the documented range of γ¹ and γ³ is (−π, π].
+double principal_angle(double angle) {
+  return angle == -std::numbers::pi ? std::numbers::pi : angle;
+}
 
 // 0-based index of the axis that is neither a nor b.
 int remaining_axis(int a, int b) {
@@ -19,7 +26,7 @@ int remaining_axis(int a, int b) {
 double elementary_angle(const Tensor& M, int k) {
   const int a = (k + 1) % 3;
   const int b = (k + 2) % 3;
-  return std::atan2(M(b, a) - M(a, b), M(a, a) + M(b, b));
+  return principal_angle(std::atan2(M(b, a) - M(a, b), M(a, a) + M(b, b)));
 }
 
 }  // namespace
@@ -112,7 +119,7 @@ EulerAngles euler_angles(const EulerSet& set, const Tensor& Q) {
     const double sin_second = std::hypot(Q(j, i), Q(k, i));
     second = std::atan2(sin_second, Q(i, i));
     singular = sin_second <= kGimbalLockTolerance;
-    if (!singular) first = std::atan2(Q(j, i), -s * Q(k, i));
+    if (!singular) first = principal_angle(std::atan2(Q(j, i), -s * Q(k, i)));
   } else {
     // Q = R_I(ψ) R_J(θ) R_K(φ): Q_IK = s sin θ, (Q_JK, Q_KK) = cos θ (−s sin ψ, cos ψ), s = ε_IJK.
     const int k = set.third - 1;
@@ -120,7 +127,7 @@ EulerAngles euler_angles(const EulerSet& set, const Tensor& Q) {
     const double cos_second = std::hypot(Q(i, i), Q(i, j));
     second = std::atan2(s * Q(i, k), cos_second);
     singular = cos_second <= kGimbalLockTolerance;
-    if (!singular) first = std::atan2(-s * Q(j, k), Q(k, k));
+    if (!singular) first = principal_angle(std::atan2(-s * Q(j, k), Q(k, k)));
   }
   // The third angle from what remains, R_K(φ) = R_J(θ)ᵀ R_I(ψ)ᵀ Q: this absorbs the error of ψ near
   // gimbal lock, so the angles reproduce Q to round-off even there.
