@@ -69,11 +69,15 @@ AxisAngle axis_angle(const EulerParameters& p) {
 }
 
 EulerParameters normalised(const EulerParameters& p) {
-  const double norm = std::sqrt(p.e0 * p.e0 + p.e.squaredNorm());
-  if (!(norm > 0.0) || !std::isfinite(norm)) {
+  // Scaled by the largest component first, so the squared norm neither underflows nor overflows.
+  const double largest = std::max(std::abs(p.e0), p.e.cwiseAbs().maxCoeff());
+  if (!(largest > 0.0) || !std::isfinite(largest) || !p.e.allFinite()) {
     throw NotARotation("Euler parameters must be finite and not all zero");
   }
-  return {p.e0 / norm, p.e / norm};
+  const double e0 = p.e0 / largest;
+  const Vec3 e = p.e / largest;
+  const double norm = std::sqrt(e0 * e0 + e.squaredNorm());
+  return {e0 / norm, e / norm};
 }
 
 EulerParameters compose(const EulerParameters& second, const EulerParameters& first) {
