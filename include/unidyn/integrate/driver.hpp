@@ -1,0 +1,46 @@
+// Integration over an interval with output rows on a regular grid, a post-step hook, and failures
+// reported without losing the rows already computed.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "unidyn/integrate/ode.hpp"
+#include "unidyn/integrate/stepper.hpp"
+
+namespace unidyn {
+
+struct IntegrationCallbacks {
+  // One output row (t, y); called in order of t.
+  std::function<void(double t, const Eigen::VectorXd& y)> output;
+  // After each accepted step, with the new state; may modify y (e.g. project it onto a constraint
+  // manifold), which then replaces the stepper's state by reset_state().
+  std::function<void(double t, Eigen::VectorXd& y)> post_step;
+};
+
+struct IntegrationResult {
+  // false: the integration stopped at t_failure, with the reason in message (both unset when ok).
+  bool ok = true;
+  std::string message;
+  double t_failure = 0.0;
+  // The last accepted point (t_end on success) and the stepper's work.
+  double t = 0.0;
+  Eigen::VectorXd y;
+  StepperStats stats;
+  std::size_t rows = 0;
+};
+
+// Integrate y' = f(t, y) with stepper from (t0, y0) to t_end (forward or backward). Rows are
+// emitted at t0, t0 ± output_step, t0 ± 2 output_step, … (each computed as t0 ± k output_step) and
+// at t_end exactly; rows between step ends come from dense output, so outputs never shorten steps.
+// A grid time within 1e-9 output_step of t_end is replaced by t_end. On an IntegrationError, or any
+// other exception from the right-hand side or the post-step hook, returns ok = false after having
+// emitted every row up to the last accepted step. Throws std::invalid_argument for a non-finite t0
+// or t_end, an output_step that is not positive and finite, or an invalid y0; exceptions from the
+// output callback propagate.
+IntegrationResult integrate(Stepper& stepper, double t0, const Eigen::VectorXd& y0, double t_end,
+                            double output_step, const IntegrationCallbacks& callbacks = {});
+
+}  // namespace unidyn
