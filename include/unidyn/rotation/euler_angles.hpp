@@ -47,8 +47,9 @@ Tensor euler_basis(const EulerSet& set, const Vec3& angles);
 // [g1, g2, g3]: ± cos γ² for Tait–Bryan sets, ± sin γ² for symmetric sets; zero at gimbal lock.
 double euler_basis_volume(const EulerSet& set, const Vec3& angles);
 
-// Gimbal lock is declared when |[g1, g2, g3]| falls to this value or below.
-inline constexpr double kGimbalLockTolerance = 1e-12;
+// Gimbal lock is declared when |[g1, g2, g3]| falls to this value or below: a few round-offs, so
+// that setting γ¹ = 0 there changes the rotation by no more than 2|[g1, g2, g3]| (below 1e-13).
+inline constexpr double kGimbalLockTolerance = 2e-14;
 
 // (6.22) Dual Euler basis g^i with g^i · g_j = δ^i_j, as columns (components on E); the component
 // matrix is the inverse transpose of the Euler basis's (footnote 14). g^2 = g_2. Throws

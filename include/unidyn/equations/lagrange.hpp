@@ -1,0 +1,51 @@
+// Lagrange's equations, approach I: coordinates plus a multiplier per constraint (book (3.7),
+// (4.23)–(4.26), §5.1).
+//
+//   d/dt(∂T/∂q̇^i) − ∂T/∂q^i = −∂U/∂q^i + Φ_i + Σ_k λ_k a_k^i,        i = 1..n
+//   Φ_i = Σ_P F_P · ∂r_P/∂q^i   (non-conservative forces)
+//
+// arranged as M(q, t) q̈ = f(q, q̇, t) + Aᵀ λ, with each constraint k a row a_k · q̇ + e_k = 0
+// (a_k = ∂Ψ_k/∂q, e_k = ∂Ψ_k/∂t for a position constraint), differentiated once more for the
+// acceleration level A q̈ + b = 0.
+#pragma once
+
+#include <vector>
+
+#include "unidyn/model/system.hpp"
+
+namespace unidyn {
+
+// A rows × cols array of expressions, row-major.
+struct ExprMatrix {
+  std::size_t rows = 0;
+  std::size_t cols = 0;
+  std::vector<Expr> data;
+
+  ExprMatrix() = default;
+  ExprMatrix(std::size_t r, std::size_t c) : rows(r), cols(c), data(r * c, Expr(0)) {}
+  Expr& operator()(std::size_t i, std::size_t j) { return data[i * cols + j]; }
+  const Expr& operator()(std::size_t i, std::size_t j) const { return data[i * cols + j]; }
+};
+
+struct EquationsOfMotion {
+  // M q̈ = f + Aᵀ λ
+  ExprMatrix mass_matrix;
+  std::vector<Expr> forcing;
+  // Each row a_k of A and e_k: the constraints at velocity level, a_k · q̇ + e_k = 0.
+  ExprMatrix constraint_matrix;
+  std::vector<Expr> constraint_velocity_term;
+  // A q̈ + b = 0: b_k = ȧ_k · q̇ + ė_k.
+  std::vector<Expr> constraint_bias;
+  // Ψ_k for position constraints (0 for velocity constraints).
+  std::vector<Expr> constraint_position;
+  // The pieces: T, U, Φ, and each equation's left side d/dt(∂T/∂q̇) − ∂T/∂q.
+  Expr kinetic_energy;
+  Expr potential_energy;
+  std::vector<Expr> generalized_force;
+  std::vector<Expr> inertia_terms;
+};
+
+// Derives the equations of motion of a system by Lagrange's equations, approach I.
+EquationsOfMotion lagrange_equations(const System& system);
+
+}  // namespace unidyn

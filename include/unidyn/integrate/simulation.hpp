@@ -1,0 +1,75 @@
+// Simulating a system: integrate M q̈ = f + Aᵀλ, A q̈ + b = 0 with drift held by projection onto the
+// position and velocity constraint manifolds after every step (DESIGN.md "Equations and numerics").
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "unidyn/integrate/ode.hpp"
+#include "unidyn/model/system.hpp"
+#include "unidyn/numeric/compiled_system.hpp"
+
+namespace unidyn {
+
+struct SimulationOptions {
+  double t_end = 10.0;
+  double output_step = 0.01;
+  std::string method = "dopri5";  // dopri5 or rk4
+  double rtol = 1e-10;
+  double atol = 1e-12;
+  double step = 0.0;  // rk4's step; 0: output_step / 10
+  bool project = true;
+  std::size_t max_steps = 100000000;
+};
+
+// The state of a system: parameters' values, q, q̇ at t0.
+struct SimulationStart {
+  std::vector<double> parameters;
+  Eigen::VectorXd q;
+  Eigen::VectorXd qdot;
+  double t0 = 0.0;
+};
+
+struct SimulationSummary {
+  bool ok = true;
+  std::string message;        // why a failed run stopped
+  double failure_time = 0.0;  // where
+  std::size_t rows = 0;
+  bool has_energy = false;
+  double energy_initial = 0.0;
+  // max |E − E0| / max over the run of (T + |U|)
+  double energy_relative_drift = 0.0;
+  // max over rows of |Ψ| and of |A q̇ + e|
+  double max_position_residual = 0.0;
+  double max_velocity_residual = 0.0;
+  // how far the given initial state was moved onto the constraint manifolds
+  double initial_projection = 0.0;
+  // per conserved quantity: its initial value c0 and max |c − c0| over the rows
+  struct Drift {
+    std::string name;
+    double initial = 0.0;
+    double max_change = 0.0;
+  };
+  std::vector<Drift> conserved_drift;
+  StepperStats stats;
+};
+
+// The CSV header: t, each q, each der(q), energy (when every force has a potential), one
+// lambda(<constraint>) per constraint, then the model's outputs and conserved quantities.
+std::vector<std::string> simulation_columns(const System& system);
+
+// Runs the simulation; every row is handed to `on_row` as soon as it is computed (so a failed run
+// keeps everything before the failure). Never throws for a failure of the run itself: the summary
+// says why it stopped.
+SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
+                           const SimulationStart& start, const SimulationOptions& options,
+                           const std::function<void(const std::vector<double>&)>& on_row);
+
+// Values of the parameters and the initial state of a model, with NAME=VALUE overrides applied to
+// parameters, coordinates (q) and rates (der(q)). Throws std::invalid_argument for an unknown name.
+SimulationStart initial_state(const System& system,
+                              const std::vector<std::pair<std::string, double>>& overrides);
+
+}  // namespace unidyn

@@ -1,0 +1,39 @@
+// The force elements of a model (book §2.4–2.5, §4.5): each gives its potential energy and the
+// forces it exerts on particles.
+#pragma once
+
+#include <optional>
+
+#include "unidyn/model/system.hpp"
+
+namespace unidyn {
+
+// A point a force element acts at or between: a particle, or a point r(q, t) of no mass.
+struct ForcePoint {
+  std::optional<std::size_t> particle;
+  VectorExpr position;
+};
+
+// Uniform gravity g (a vector, e.g. −g E3) on every particle: U = −Σ m g · r, F = m g.
+ForceElement uniform_gravity(const System& system, const VectorExpr& g);
+
+// (2.5) A spring between two points with energy U(s) of its stretch s = ‖r_to − r_from‖ − L0
+// (U = ½ K s² for a linear spring): F_to = −U'(s) e, F_from = U'(s) e, e = (r_to − r_from)/‖·‖.
+ForceElement spring(const ForcePoint& from, const ForcePoint& to, const Expr& rest_length,
+                    const GiNaC::symbol& stretch, const Expr& energy);
+
+// A linear damper: F_to = −c ṡ e, F_from = c ṡ e with ṡ = e · (v_to − v_from).
+ForceElement damper(const System& system, const ForcePoint& from, const ForcePoint& to,
+                    const Expr& coefficient);
+
+// A force F(q, q̇, t) on a particle.
+ForceElement applied_force(std::size_t particle, const VectorExpr& force);
+
+// A potential energy U(q, t) given directly in the coordinates.
+ForceElement coordinate_potential(const Expr& U);
+
+// (2.5) Newtonian gravitation between two particles: U = −G m1 m2 / ‖r2 − r1‖.
+ForceElement gravitation(const System& system, std::size_t first, std::size_t second,
+                         const Expr& G);
+
+}  // namespace unidyn

@@ -1,0 +1,30 @@
+// What names mean inside a model's expressions.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "unidyn/model/system.hpp"
+#include "unidyn/symbolic/expression_parser.hpp"
+
+namespace unidyn {
+
+// Names of a System: parameters, coordinates and der(q), t, and particle members
+// (P.position, P.velocity, P.acceleration, P.mass), and each constraint's multiplier c.lambda.
+// Extra names (such as the stretch `s` inside a spring's energy) can be added on top.
+class SystemScope : public Scope {
+ public:
+  explicit SystemScope(const System& system) : system_(system) {}
+
+  void define(const std::string& name, Value value) { extra_.insert_or_assign(name, value); }
+
+  std::optional<Value> lookup(std::string_view name) const override;
+  std::optional<Expr> rate(std::string_view name) const override;
+  std::vector<std::string> names() const override;
+
+ private:
+  const System& system_;
+  std::map<std::string, Value, std::less<>> extra_;
+};
+
+}  // namespace unidyn

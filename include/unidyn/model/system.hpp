@@ -1,0 +1,120 @@
+// The System: what a model describes (book Ch. 1–2, 4–5). Immutable once built; simulation state
+// lives elsewhere (as Pinocchio separates Model from Data).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "unidyn/symbolic/coordinates.hpp"
+#include "unidyn/symbolic/expression.hpp"
+
+namespace unidyn {
+
+// A named number the model's expressions use; `--set NAME=VALUE` overrides its value.
+struct Parameter {
+  std::string name;
+  GiNaC::realsymbol symbol;
+  double value;
+  SourcePosition where;
+};
+
+// A particle of mass m at r(q, t).
+struct Particle {
+  std::string name;
+  Expr mass;
+  VectorExpr position;
+  SourcePosition where;
+};
+
+// A force F acting on a particle (the vector Newton's law sees).
+struct ParticleForce {
+  std::size_t particle;
+  VectorExpr force;
+};
+
+// One entry of `forces:`. A conservative element has a potential U whose forces on the particles
+// are −∂U/∂r (listed in `forces` for Newton's form); a non-conservative element has only forces.
+// A bare `potential:` in the coordinates has no force vectors: both forms see it through −∂U/∂q.
+struct ForceElement {
+  enum class Kind { gravity, spring, damper, force, potential, gravitation };
+  Kind kind;
+  std::string label;
+  SourcePosition where;
+  Expr potential = 0;
+  std::vector<ParticleForce> forces;
+  bool conservative = false;
+};
+
+// Coulomb friction on a constraint's contact (issue 5 simulates it).
+struct Friction {
+  std::string on;
+  Expr dynamic_coefficient;
+  Expr static_coefficient;
+};
+
+// (1.9)–(1.13) A constraint. position: Ψ(q, t) = 0; velocity: a(q, t) · q̇ + e(q, t) = 0.
+// Its force on the system is λ ∂Ψ/∂q (generalised) — on a particle R = Σ λ ∂Ψ/∂r.
+struct Constraint {
+  enum class Kind { position, velocity };
+  std::string name;
+  Kind kind;
+  Expr expression;
+  GiNaC::realsymbol multiplier;  // λ, printed lambda(name)
+  bool unilateral = false;
+  std::optional<Friction> friction;
+  SourcePosition where;
+};
+
+// A named scalar to report: an extra CSV column, or a quantity the summary checks for drift.
+struct Output {
+  std::string name;
+  Expr expression;
+  SourcePosition where;
+};
+
+struct SimulationSettings {
+  double t_end = 10.0;
+  double output_step = 0.01;
+  std::string method = "dopri5";
+  double rtol = 1e-10;
+  double atol = 1e-12;
+  double step = 0.0;  // fixed step of rk4; 0 means output_step / 10
+};
+
+struct System {
+  std::string name;
+  std::string source;  // the model file
+  Configuration configuration;
+  std::vector<Parameter> parameters;
+  std::vector<Particle> particles;
+  std::vector<ForceElement> forces;
+  std::vector<Constraint> constraints;
+  // Initial q and der(q) per coordinate, expressions in the parameters (0 when absent).
+  std::vector<Expr> initial_values;
+  std::vector<Expr> initial_rates;
+  SimulationSettings simulate;
+  std::vector<Output> outputs;
+  std::vector<Output> conserved;
+
+  const std::vector<CoordinateSymbols>& coordinates() const { return configuration.coordinates(); }
+  const GiNaC::realsymbol& time() const { return configuration.time(); }
+
+  std::optional<std::size_t> find_parameter(const std::string& name) const;
+  std::optional<std::size_t> find_coordinate(const std::string& name) const;
+  std::optional<std::size_t> find_particle(const std::string& name) const;
+
+  // v = dr/dt of particle p (1.7).
+  VectorExpr velocity(std::size_t p) const;
+  // a = dv/dt of particle p.
+  VectorExpr acceleration(std::size_t p) const;
+  // Total potential energy U of the conservative elements.
+  Expr potential_energy() const;
+  // T = ½ Σ m v · v.
+  Expr kinetic_energy() const;
+  // The parameters' values as a substitution (for numeric checks).
+  GiNaC::exmap parameter_values() const;
+};
+
+}  // namespace unidyn

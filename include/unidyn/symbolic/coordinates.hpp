@@ -1,0 +1,47 @@
+// Generalised coordinates as symbols, and the total time derivative (book (1.7)–(1.8)).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "unidyn/symbolic/expression.hpp"
+
+namespace unidyn {
+
+// The symbols of one generalised coordinate q: q itself, its rate der(q) and its acceleration.
+struct CoordinateSymbols {
+  std::string name;
+  GiNaC::realsymbol value;
+  GiNaC::realsymbol rate;
+  GiNaC::realsymbol acceleration;
+
+  // Symbols printed as q, q' and q'' in text and as q, \dot{q}, \ddot{q} in LaTeX.
+  explicit CoordinateSymbols(const std::string& coordinate_name);
+};
+
+// The coordinates of a system and time: enough to differentiate any expression along a motion.
+class Configuration {
+ public:
+  Configuration();
+
+  // Adds a coordinate; returns its index.
+  std::size_t add(const std::string& name);
+
+  const std::vector<CoordinateSymbols>& coordinates() const { return coordinates_; }
+  std::size_t size() const { return coordinates_.size(); }
+  const GiNaC::realsymbol& time() const { return time_; }
+
+  // (1.7)–(1.8) total time derivative along a motion q(t):
+  //   ḟ = ∂f/∂t + Σ ∂f/∂q^i q̇^i + Σ ∂f/∂q̇^i q̈^i.
+  Expr total_derivative(const Expr& f) const;
+  VectorExpr total_derivative(const VectorExpr& v) const;
+
+  // The substitution q̈ ↦ 0 for every coordinate: what is left of an expression linear in q̈.
+  GiNaC::exmap zero_accelerations() const;
+
+ private:
+  std::vector<CoordinateSymbols> coordinates_;
+  GiNaC::realsymbol time_;
+};
+
+}  // namespace unidyn

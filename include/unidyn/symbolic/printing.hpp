@@ -1,0 +1,24 @@
+// Readable equations: simplification for display, and text / LaTeX printing.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "unidyn/symbolic/expression.hpp"
+
+namespace unidyn {
+
+// The number of nodes of an expression tree: the measure "simpler" means here.
+std::size_t expression_size(const Expr& e);
+
+// Expanded, with sin²x + cos²x = 1 applied wherever it makes the expression smaller (each
+// argument x tried both ways, sin² → 1 − cos² and cos² → 1 − sin²), rational functions normalised.
+Expr simplify(const Expr& e);
+
+// Collects an expression in the given symbols (e.g. the accelerations) after simplifying.
+Expr collect_in(const Expr& e, const std::vector<Expr>& symbols);
+
+std::string to_text(const Expr& e);
+std::string to_latex(const Expr& e);
+
+}  // namespace unidyn

@@ -1,0 +1,256 @@
+// The model pipeline commands.
+#include "model_commands.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "unidyn/equations/equivalence.hpp"
+#include "unidyn/equations/lagrange.hpp"
+#include "unidyn/equations/newton.hpp"
+#include "unidyn/integrate/simulation.hpp"
+#include "unidyn/io/csv.hpp"
+#include "unidyn/io/equation_report.hpp"
+#include "unidyn/io/model_file.hpp"
+#include "unidyn/numeric/compiled_system.hpp"
+#include "unidyn/symbolic/printing.hpp"
+
+#ifndef UNIDYN_MODELS_DIR
+#define UNIDYN_MODELS_DIR "models"
+#endif
+
+namespace unidyn::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The bundled models: $UNIDYN_MODELS or the source tree's models/.
+fs::path models_directory() {
+  if (const char* env = std::getenv("UNIDYN_MODELS")) return env;
+  return UNIDYN_MODELS_DIR;
+}
+
+std::vector<fs::path> bundled_models() {
+  std::vector<fs::path> found;
+  std::error_code error;
+  for (fs::recursive_directory_iterator it(models_directory(), error), end; !error && it != end;
+       it.increment(error)) {
+    if (it->path().extension() == ".yaml") found.push_back(it->path());
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+// A model argument: a file, or the name of a bundled model.
+std::string resolve_model(const std::string& argument) {
+  if (fs::exists(argument)) return argument;
+  for (const auto& path : bundled_models()) {
+    if (path.stem() == argument) return path.string();
+  }
+  return argument;  // load_model reports that it cannot be opened
+}
+
+std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::string>& sets) {
+  std::vector<std::pair<std::string, double>> overrides;
+  for (const auto& s : sets) {
+    const std::size_t eq = s.find('=');
+    double value = 0;
+    const char* begin = s.data() + (eq == std::string::npos ? 0 : eq + 1);
+    const auto [ptr, ec] = std::from_chars(begin, s.data() + s.size(), value);
+    if (eq == std::string::npos || ec != std::errc() || ptr != s.data() + s.size()) {
+      throw std::invalid_argument("--set " + s + ": expected NAME=NUMBER");
+    }
+    overrides.emplace_back(s.substr(0, eq), value);
+  }
+  return overrides;
+}
+
+EquationFormat parse_format(const std::string& format) {
+  if (format == "text") return EquationFormat::text;
+  if (format == "latex") return EquationFormat::latex;
+  if (format == "json") return EquationFormat::json;
+  throw std::invalid_argument("--format must be text, latex or json");
+}
+
+int run_derive(const ModelCommands& c) {
+  const System system = load_model(resolve_model(c.model));
+  const EquationFormat format = parse_format(c.format);
+  if (c.method == "lagrange") {
+    write_lagrange(std::cout, system, lagrange_equations(system), format);
+  } else if (c.method == "newton-euler") {
+    write_newton(std::cout, system, newton_equations(system), format);
+  } else {
+    throw std::invalid_argument("--method must be lagrange or newton-euler");
+  }
+  return 0;
+}
+
+int run_check(const ModelCommands& c) {
+  const System system = load_model(resolve_model(c.model));
+  const EquationsOfMotion lagrange = lagrange_equations(system);
+  const NewtonEquations newton = newton_equations(system);
+  const EquivalenceReport report = check_equivalence(system, lagrange, newton);
+  const auto& q = system.coordinates();
+  fmt::print("{}: Newton's law projected onto the partial velocities vs Lagrange's equations\n",
+             system.name);
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    fmt::print("  [{}] residual simplifies to {}\n", q[i].name,
+               to_text(report.symbolic_residual[i]));
+  }
+  fmt::print("  symbolic agreement: {}\n", report.symbolic_zero ? "yes" : "NO");
+  fmt::print("  numeric agreement at {} random states: max relative residual {:.3g}\n",
+             report.states, report.numeric_relative_residual);
+
+  // Constraints at the initial state: satisfied, independent.
+  const SimulationStart start = initial_state(system, parse_sets(c.sets));
+  const CompiledSystem compiled(system, lagrange);
+  CompiledSystemData data = compiled.make_data();
+  bool constraints_ok = true;
+  if (compiled.constraint_count() > 0) {
+    compiled.constraints(start.t0, start.q, start.qdot, start.parameters, data);
+    const Eigen::VectorXd velocity =
+        data.constraint_matrix * start.qdot + data.constraint_velocity_term;
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(data.constraint_matrix);
+    fmt::print(
+        "  constraints at the initial state: max |Psi| = {:.3g}, max |A q' + e| = {:.3g}, "
+        "rank A = {} of {}\n",
+        data.constraint_position.cwiseAbs().maxCoeff(), velocity.cwiseAbs().maxCoeff(), lu.rank(),
+        compiled.constraint_count());
+    constraints_ok = static_cast<std::size_t>(lu.rank()) == compiled.constraint_count();
+    if (!constraints_ok) fmt::print("  the constraints are not independent at the initial state\n");
+  }
+  const bool agree = report.symbolic_zero && report.numeric_relative_residual < 1e-9;
+  fmt::print("{}\n", agree && constraints_ok ? "check passed" : "check FAILED");
+  return agree && constraints_ok ? 0 : 1;
+}
+
+SimulationOptions options_for(const System& system, const ModelCommands& c) {
+  SimulationOptions o;
+  o.t_end = c.t_end > 0 ? c.t_end : system.simulate.t_end;
+  o.output_step = c.output_step > 0 ? c.output_step : system.simulate.output_step;
+  o.method = c.integrator.empty() ? system.simulate.method : c.integrator;
+  o.rtol = c.rtol > 0 ? c.rtol : system.simulate.rtol;
+  o.atol = std::min(system.simulate.atol, o.rtol * 1e-2);
+  o.step = system.simulate.step;
+  if (o.method != "dopri5" && o.method != "rk4") {
+    throw std::invalid_argument("--method must be dopri5 or rk4");
+  }
+  return o;
+}
+
+int run_simulate(const ModelCommands& c) {
+  const System system = load_model(resolve_model(c.model));
+  const SimulationStart start = initial_state(system, parse_sets(c.sets));
+  const SimulationOptions options = options_for(system, c);
+  const auto clock_start = std::chrono::steady_clock::now();
+  const CompiledSystem compiled(system, lagrange_equations(system));
+  const double derive_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+
+  const std::string path = c.output.empty() ? "-" : c.output;
+  CsvWriter csv(path);
+  csv.header(simulation_columns(system));
+  const auto run_start = std::chrono::steady_clock::now();
+  const SimulationSummary s = simulate(system, compiled, start, options,
+                                       [&](const std::vector<double>& row) { csv.row(row); });
+  const double run_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
+
+  // The summary goes to standard error when the CSV takes standard output.
+  std::FILE* out = path == "-" ? stderr : stdout;
+  fmt::print(out, "{}: {} from t = 0 to {} ({}), {} rows{}\n", system.name,
+             s.ok ? "simulated" : "FAILED", options.t_end, options.method, s.rows,
+             path == "-" ? "" : " written to " + path);
+  if (!s.ok) fmt::print(out, "  stopped at t = {:.10g}: {}\n", s.failure_time, s.message);
+  fmt::print(out,
+             "  derive + compile {:.3f} s, integrate {:.3f} s; {} steps ({} rejected), {} "
+             "right-hand sides\n",
+             derive_seconds, run_seconds, s.stats.accepted_steps, s.stats.rejected_steps,
+             s.stats.rhs_evaluations);
+  if (s.has_energy) {
+    fmt::print(out, "  energy: initial {:.12g}, relative drift {:.3g}\n", s.energy_initial,
+               s.energy_relative_drift);
+  }
+  if (!system.constraints.empty()) {
+    fmt::print(out, "  constraint residuals: max |Psi| {:.3g}, max |A q' + e| {:.3g}\n",
+               s.max_position_residual, s.max_velocity_residual);
+    if (s.initial_projection > 1e-10) {
+      fmt::print(out, "  note: the initial state was moved by {:.3g} onto the constraints\n",
+                 s.initial_projection);
+    }
+  }
+  for (const auto& d : s.conserved_drift) {
+    fmt::print(out, "  conserved {}: initial {:.12g}, max change {:.3g}", d.name, d.initial,
+               d.max_change);
+    if (d.initial != 0.0) fmt::print(out, " (relative {:.3g})", d.max_change / std::abs(d.initial));
+    fmt::print(out, "\n");
+  }
+  return s.ok ? 0 : 1;
+}
+
+int run_models(const ModelCommands& c) {
+  const auto models = bundled_models();
+  if (c.model_name.empty()) {
+    for (const auto& path : models) {
+      std::string title;
+      if (std::ifstream in(path); in) {
+        for (std::string line; std::getline(in, line);) {
+          if (line.starts_with("name:")) {
+            title = line.substr(5);
+            break;
+          }
+        }
+      }
+      fmt::print("{:<28}{}\n", path.stem().string(), title);
+    }
+    return 0;
+  }
+  for (const auto& path : models) {
+    if (path.stem() == c.model_name) {
+      std::ifstream in(path);
+      fmt::print("# {}\n{}", path.string(), std::string(std::istreambuf_iterator<char>(in), {}));
+      return 0;
+    }
+  }
+  throw std::invalid_argument("no bundled model named '" + c.model_name +
+                              "' (see `unidyn models`)");
+}
+
+}  // namespace
+
+void add_model_commands(CLI::App& app, ModelCommands& c) {
+  c.derive = app.add_subcommand("derive", "Print a model's equations of motion");
+  c.derive->add_option("model", c.model, "MODEL file or bundled model name")->required();
+  c.derive->add_option("--method", c.method, "lagrange | newton-euler")->capture_default_str();
+  c.derive->add_option("--format", c.format, "text | latex | json")->capture_default_str();
+
+  c.simulate = app.add_subcommand("simulate", "Simulate a model: CSV rows and a run summary");
+  c.simulate->add_option("model", c.model, "MODEL file or bundled model name")->required();
+  c.simulate->add_option("-o,--output", c.output, "CSV file (default: standard output)");
+  c.simulate->add_option("--t-end", c.t_end, "end time");
+  c.simulate->add_option("--output-step", c.output_step, "time between rows");
+  c.simulate->add_option("--method", c.integrator, "dopri5 | rk4");
+  c.simulate->add_option("--rtol", c.rtol, "relative tolerance (dopri5)");
+  c.simulate->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
+
+  c.check = app.add_subcommand("check", "Newton vs Lagrange agreement, constraint consistency");
+  c.check->add_option("model", c.model, "MODEL file or bundled model name")->required();
+  c.check->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
+
+  c.models = app.add_subcommand("models", "List the bundled book systems, or print one");
+  c.models->add_option("name", c.model_name, "a bundled model");
+}
+
+int run_model_commands(const ModelCommands& c) {
+  if (c.derive->parsed()) return run_derive(c);
+  if (c.simulate->parsed()) return run_simulate(c);
+  if (c.check->parsed()) return run_check(c);
+  if (c.models->parsed()) return run_models(c);
+  return -1;
+}
+
+}  // namespace unidyn::cli

@@ -1,0 +1,32 @@
+// `unidyn derive`, `simulate`, `check`, `models`: the model pipeline on the command line.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+namespace unidyn::cli {
+
+struct ModelCommands {
+  CLI::App* derive = nullptr;
+  CLI::App* simulate = nullptr;
+  CLI::App* check = nullptr;
+  CLI::App* models = nullptr;
+
+  std::string model;
+  std::string method = "lagrange";
+  std::string format = "text";
+  std::string output;
+  std::vector<std::string> sets;
+  double t_end = 0, output_step = 0, rtol = 0;
+  std::string integrator;
+  std::string model_name;
+};
+
+void add_model_commands(CLI::App& app, ModelCommands& commands);
+
+// Runs whichever of the commands was parsed; returns the exit status (0 success, 1 the run failed,
+// 2 bad input), or -1 when none of them was.
+int run_model_commands(const ModelCommands& commands);
+
+}  // namespace unidyn::cli

@@ -1,0 +1,65 @@
+// Lagrange's equations, approach I.
+#include "unidyn/equations/lagrange.hpp"
+
+namespace unidyn {
+
+EquationsOfMotion lagrange_equations(const System& system) {
+  const Configuration& config = system.configuration;
+  const auto& q = system.coordinates();
+  const std::size_t n = q.size();
+  const std::size_t m = system.constraints.size();
+  EquationsOfMotion eq;
+  eq.kinetic_energy = system.kinetic_energy();
+  eq.potential_energy = system.potential_energy();
+
+  // Φ_i = Σ F · ∂r/∂q^i over the non-conservative elements
+  eq.generalized_force.assign(n, 0);
+  for (const auto& element : system.forces) {
+    if (element.conservative) continue;
+    for (const auto& [p, F] : element.forces) {
+      for (std::size_t i = 0; i < n; ++i) {
+        eq.generalized_force[i] += dot(F, diff(system.particles[p].position, q[i].value));
+      }
+    }
+  }
+
+  // Row i: d/dt(∂T/∂q̇^i) − ∂T/∂q^i + ∂U/∂q^i − Φ_i, linear in q̈: M_ij = ∂(row)/∂q̈^j
+  const GiNaC::exmap no_acceleration = config.zero_accelerations();
+  eq.mass_matrix = ExprMatrix(n, n);
+  eq.forcing.assign(n, 0);
+  eq.inertia_terms.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Expr momentum = eq.kinetic_energy.diff(q[i].rate);
+    eq.inertia_terms[i] = config.total_derivative(momentum) - eq.kinetic_energy.diff(q[i].value);
+    for (std::size_t j = 0; j < n; ++j) {
+      eq.mass_matrix(i, j) = momentum.diff(q[j].rate);
+    }
+    const Expr row =
+        eq.inertia_terms[i] + eq.potential_energy.diff(q[i].value) - eq.generalized_force[i];
+    eq.forcing[i] = -row.subs(no_acceleration);
+  }
+
+  // Constraints: a_k · q̇ + e_k = 0 and its rate A q̈ + b = 0
+  eq.constraint_matrix = ExprMatrix(m, n);
+  eq.constraint_velocity_term.assign(m, 0);
+  eq.constraint_bias.assign(m, 0);
+  eq.constraint_position.assign(m, 0);
+  GiNaC::exmap no_rate;
+  for (const auto& c : q) no_rate[c.rate] = 0;
+  for (std::size_t k = 0; k < m; ++k) {
+    const Constraint& c = system.constraints[k];
+    Expr velocity_form;
+    if (c.kind == Constraint::Kind::position) {
+      eq.constraint_position[k] = c.expression;
+      velocity_form = config.total_derivative(c.expression);  // Ψ̇ = ∂Ψ/∂q q̇ + ∂Ψ/∂t
+    } else {
+      velocity_form = c.expression;
+    }
+    for (std::size_t j = 0; j < n; ++j) eq.constraint_matrix(k, j) = velocity_form.diff(q[j].rate);
+    eq.constraint_velocity_term[k] = velocity_form.subs(no_rate);
+    eq.constraint_bias[k] = config.total_derivative(velocity_form).subs(no_acceleration);
+  }
+  return eq;
+}
+
+}  // namespace unidyn

@@ -1,0 +1,251 @@
+// The simulation loop: constrained dynamics, projection, output rows, run summary.
+#include "unidyn/integrate/simulation.hpp"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "unidyn/integrate/dormand_prince.hpp"
+#include "unidyn/integrate/driver.hpp"
+#include "unidyn/integrate/rk4.hpp"
+
+namespace unidyn {
+namespace {
+
+bool has_energy_column(const System& system) {
+  for (const auto& f : system.forces) {
+    if (!f.conservative) return false;
+  }
+  return true;
+}
+
+double to_double(const Expr& e, const GiNaC::exmap& values) {
+  const Expr v = GiNaC::evalf(e.subs(values));
+  if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {
+    std::ostringstream text;
+    text << e;
+    throw std::invalid_argument("cannot evaluate the initial value '" + text.str() +
+                                "' to a real number");
+  }
+  return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+}
+
+// Holds the state on the constraint manifolds: Newton steps Δq = −M⁻¹A_Ψᵀ (A_Ψ M⁻¹ A_Ψᵀ)⁻¹ Ψ on
+// the position constraints, then Δq̇ = −M⁻¹Aᵀ (A M⁻¹ Aᵀ)⁻¹ (A q̇ + e) on all of them (the
+// corrections of least kinetic-energy norm).
+class Projector {
+ public:
+  Projector(const CompiledSystem& compiled, std::span<const double> parameters)
+      : compiled_(compiled), parameters_(parameters), data_(compiled.make_data()) {
+    for (std::size_t k = 0; k < compiled.constraint_count(); ++k) {
+      if (compiled.is_position_constraint()[k])
+        position_rows_.push_back(static_cast<Eigen::Index>(k));
+    }
+  }
+
+  // Projects (q, q̇) in place; returns the size of the correction.
+  double project(double t, Eigen::VectorXd& q, Eigen::VectorXd& qdot) {
+    if (compiled_.constraint_count() == 0) return 0.0;
+    double moved = 0.0;
+    Eigen::VectorXd qddot, lambda;
+    for (int iteration = 0; iteration < 4 && !position_rows_.empty(); ++iteration) {
+      compiled_.constraints(t, q, qdot, parameters_, data_);
+      const Eigen::VectorXd psi = data_.constraint_position(position_rows_);
+      if (psi.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + q.cwiseAbs().maxCoeff())) break;
+      const Eigen::MatrixXd A = data_.constraint_matrix(position_rows_, Eigen::all);
+      const Eigen::VectorXd dq = correction(t, q, qdot, A, psi);
+      q -= dq;
+      moved = std::max(moved, dq.cwiseAbs().maxCoeff());
+    }
+    compiled_.constraints(t, q, qdot, parameters_, data_);
+    const Eigen::VectorXd residual =
+        data_.constraint_matrix * qdot + data_.constraint_velocity_term;
+    const Eigen::VectorXd dqdot = correction(t, q, qdot, data_.constraint_matrix, residual);
+    qdot -= dqdot;
+    return std::max(moved, dqdot.cwiseAbs().maxCoeff());
+  }
+
+ private:
+  Eigen::VectorXd correction(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                             const Eigen::MatrixXd& A, const Eigen::VectorXd& r) {
+    Eigen::VectorXd qddot, lambda;
+    compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data_);  // fills the mass matrix
+    const Eigen::LLT<Eigen::MatrixXd> llt(data_.mass_matrix);
+    const Eigen::MatrixXd MinvAt = llt.solve(A.transpose());
+    return MinvAt * (A * MinvAt).ldlt().solve(r);
+  }
+
+  const CompiledSystem& compiled_;
+  std::span<const double> parameters_;
+  CompiledSystemData data_;
+  std::vector<Eigen::Index> position_rows_;
+};
+
+std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunction rhs) {
+  if (options.method == "rk4") {
+    double h = options.step > 0 ? options.step : options.output_step / 10;
+    // a whole number of steps per output interval
+    h = options.output_step / std::ceil(options.output_step / h - 1e-9);
+    return std::make_unique<Rk4>(std::move(rhs), h);
+  }
+  if (options.method == "dopri5") {
+    DormandPrinceOptions o;
+    o.rtol = options.rtol;
+    o.atol = options.atol;
+    o.max_steps = options.max_steps;
+    return std::make_unique<DormandPrince54>(std::move(rhs), o);
+  }
+  throw std::invalid_argument("unknown method '" + options.method + "' (expected dopri5 or rk4)");
+}
+
+}  // namespace
+
+std::vector<std::string> simulation_columns(const System& system) {
+  std::vector<std::string> columns{"t"};
+  for (const auto& q : system.coordinates()) columns.push_back(q.name);
+  for (const auto& q : system.coordinates()) columns.push_back("der(" + q.name + ")");
+  if (has_energy_column(system)) columns.push_back("energy");
+  for (const auto& c : system.constraints) columns.push_back("lambda(" + c.name + ")");
+  for (const auto& o : system.outputs) columns.push_back(o.name);
+  for (const auto& o : system.conserved) columns.push_back(o.name);
+  return columns;
+}
+
+SimulationStart initial_state(const System& system,
+                              const std::vector<std::pair<std::string, double>>& overrides) {
+  SimulationStart start;
+  for (const auto& p : system.parameters) start.parameters.push_back(p.value);
+  const std::size_t n = system.coordinates().size();
+  std::vector<std::optional<double>> q_override(n), qdot_override(n);
+  for (const auto& [name, value] : overrides) {
+    if (const auto p = system.find_parameter(name)) {
+      start.parameters[*p] = value;
+    } else if (const auto q = system.find_coordinate(name)) {
+      q_override[*q] = value;
+    } else if (name.starts_with("der(") && name.ends_with(")") &&
+               system.find_coordinate(name.substr(4, name.size() - 5))) {
+      qdot_override[*system.find_coordinate(name.substr(4, name.size() - 5))] = value;
+    } else {
+      throw std::invalid_argument("--set " + name +
+                                  ": not a parameter, coordinate or der(coordinate)");
+    }
+  }
+  GiNaC::exmap values;
+  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
+    values[system.parameters[k].symbol] = start.parameters[k];
+  }
+  start.q.resize(static_cast<Eigen::Index>(n));
+  start.qdot.resize(static_cast<Eigen::Index>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto I = static_cast<Eigen::Index>(i);
+    start.q[I] = q_override[i] ? *q_override[i] : to_double(system.initial_values[i], values);
+    start.qdot[I] =
+        qdot_override[i] ? *qdot_override[i] : to_double(system.initial_rates[i], values);
+  }
+  return start;
+}
+
+SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
+                           const SimulationStart& start, const SimulationOptions& options,
+                           const std::function<void(const std::vector<double>&)>& on_row) {
+  SimulationSummary summary;
+  const auto n = static_cast<Eigen::Index>(compiled.coordinate_count());
+  const std::span<const double> parameters(start.parameters);
+  CompiledSystemData data = compiled.make_data();
+  Projector projector(compiled, parameters);
+  summary.has_energy = has_energy_column(system);
+
+  // y = (q, q̇), y' = (q̇, q̈)
+  Eigen::VectorXd qddot, lambda;
+  const OdeFunction rhs = [&](double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
+    compiled.solve(t, y.head(n), y.tail(n), parameters, qddot, lambda, data);
+    dydt.head(n) = y.tail(n);
+    dydt.tail(n) = qddot;
+  };
+
+  std::vector<double> observed(compiled.observation_count());
+  std::vector<double> row;
+  const std::size_t outputs_begin = 2;  // after kinetic and potential energy
+  const std::size_t n_conserved = system.conserved.size();
+  std::vector<double> conserved_initial(n_conserved);
+  double energy_scale = 0.0, max_energy_error = 0.0;
+
+  // One output row at (t, y): solve for q̈ and λ, observe, check residuals, hand it on.
+  const auto emit = [&](double t, const Eigen::VectorXd& y) {
+    const Eigen::VectorXd q = y.head(n), qdot = y.tail(n);
+    compiled.solve(t, q, qdot, parameters, qddot, lambda, data);
+    compiled.observe(t, q, qdot, qddot, lambda, parameters, observed, data);
+    row.assign(1, t);
+    row.insert(row.end(), q.data(), q.data() + n);
+    row.insert(row.end(), qdot.data(), qdot.data() + n);
+    const double T = observed[0], U = observed[1], E = T + U;
+    if (summary.has_energy) row.push_back(E);
+    row.insert(row.end(), lambda.data(), lambda.data() + lambda.size());
+    row.insert(row.end(), observed.begin() + outputs_begin, observed.end());
+    if (summary.rows == 0) {
+      summary.energy_initial = E;
+      for (std::size_t c = 0; c < n_conserved; ++c) {
+        conserved_initial[c] = observed[observed.size() - n_conserved + c];
+        summary.conserved_drift.push_back({system.conserved[c].name, conserved_initial[c], 0.0});
+      }
+    }
+    energy_scale = std::max(energy_scale, T + std::abs(U));
+    max_energy_error = std::max(max_energy_error, std::abs(E - summary.energy_initial));
+    for (std::size_t c = 0; c < n_conserved; ++c) {
+      const double c0 = conserved_initial[c];
+      const double value = observed[observed.size() - n_conserved + c];
+      summary.conserved_drift[c].max_change =
+          std::max(summary.conserved_drift[c].max_change, std::abs(value - c0));
+    }
+    if (compiled.constraint_count() > 0) {
+      compiled.constraints(t, q, qdot, parameters, data);
+      for (std::size_t k = 0; k < compiled.constraint_count(); ++k) {
+        const auto K = static_cast<Eigen::Index>(k);
+        if (compiled.is_position_constraint()[k]) {
+          summary.max_position_residual =
+              std::max(summary.max_position_residual, std::abs(data.constraint_position[K]));
+        }
+      }
+      const Eigen::VectorXd velocity_residual =
+          data.constraint_matrix * qdot + data.constraint_velocity_term;
+      summary.max_velocity_residual =
+          std::max(summary.max_velocity_residual, velocity_residual.cwiseAbs().maxCoeff());
+    }
+    ++summary.rows;
+    on_row(row);
+  };
+
+  // Integrate with the projection after every step; rows come through `emit`.
+  try {
+    const std::unique_ptr<Stepper> stepper = make_stepper(options, rhs);
+    Eigen::VectorXd q = start.q, qdot = start.qdot;
+    if (options.project) summary.initial_projection = projector.project(start.t0, q, qdot);
+    Eigen::VectorXd y0(2 * n);
+    y0 << q, qdot;
+    IntegrationCallbacks callbacks;
+    callbacks.output = emit;
+    if (options.project && compiled.constraint_count() > 0) {
+      callbacks.post_step = [&](double t, Eigen::VectorXd& y) {
+        Eigen::VectorXd yq = y.head(n), yv = y.tail(n);
+        projector.project(t, yq, yv);
+        y << yq, yv;
+      };
+    }
+    const IntegrationResult result =
+        integrate(*stepper, start.t0, y0, options.t_end, options.output_step, callbacks);
+    summary.ok = result.ok;
+    summary.message = result.message;
+    summary.failure_time = result.t_failure;
+    summary.stats = result.stats;
+  } catch (const std::exception& e) {
+    // the initial state itself cannot be solved (or its output row failed)
+    summary.ok = false;
+    summary.message = e.what();
+    summary.failure_time = start.t0;
+  }
+  summary.energy_relative_drift = max_energy_error / std::max(energy_scale, 1e-300);
+  return summary;
+}
+
+}  // namespace unidyn

@@ -1,0 +1,78 @@
+// Force elements: potentials and particle forces.
+#include "unidyn/model/forces.hpp"
+
+namespace unidyn {
+namespace {
+
+// Adds F at a point to the element when the point is a particle (forces on massless fixed points
+// are reactions the system does not see).
+void push_force(ForceElement& element, const ForcePoint& point, const VectorExpr& F) {
+  if (point.particle) element.forces.push_back({*point.particle, F});
+}
+
+}  // namespace
+
+ForceElement uniform_gravity(const System& system, const VectorExpr& g) {
+  ForceElement element{ForceElement::Kind::gravity, "gravity", {}, 0, {}, true};
+  for (std::size_t p = 0; p < system.particles.size(); ++p) {
+    const Particle& particle = system.particles[p];
+    // (2.5) U = −m g · r, F = −∂U/∂r = m g
+    element.potential -= particle.mass * dot(g, particle.position);
+    element.forces.push_back({p, particle.mass * g});
+  }
+  return element;
+}
+
+ForceElement spring(const ForcePoint& from, const ForcePoint& to, const Expr& rest_length,
+                    const GiNaC::symbol& stretch, const Expr& energy) {
+  ForceElement element{ForceElement::Kind::spring, "spring", {}, 0, {}, true};
+  const VectorExpr d = to.position - from.position;
+  const Expr length = norm(d);
+  const Expr s = length - rest_length;
+  const VectorExpr e = d / length;
+  // U'(s) at the current stretch
+  const Expr tension = energy.diff(stretch).subs(GiNaC::lst{stretch}, GiNaC::lst{s});
+  element.potential = energy.subs(GiNaC::lst{stretch}, GiNaC::lst{s});
+  push_force(element, to, -tension * e);
+  push_force(element, from, tension * e);
+  return element;
+}
+
+ForceElement damper(const System& system, const ForcePoint& from, const ForcePoint& to,
+                    const Expr& coefficient) {
+  ForceElement element{ForceElement::Kind::damper, "damper", {}, 0, {}, false};
+  const VectorExpr d = to.position - from.position;
+  const VectorExpr e = d / norm(d);
+  const VectorExpr relative_velocity = system.configuration.total_derivative(d);
+  const Expr stretch_rate = dot(e, relative_velocity);
+  push_force(element, to, -coefficient * stretch_rate * e);
+  push_force(element, from, coefficient * stretch_rate * e);
+  return element;
+}
+
+ForceElement applied_force(std::size_t particle, const VectorExpr& force) {
+  ForceElement element{ForceElement::Kind::force, "force", {}, 0, {}, false};
+  element.forces.push_back({particle, force});
+  return element;
+}
+
+ForceElement coordinate_potential(const Expr& U) {
+  return {ForceElement::Kind::potential, "potential", {}, U, {}, true};
+}
+
+ForceElement gravitation(const System& system, std::size_t first, std::size_t second,
+                         const Expr& G) {
+  ForceElement element{ForceElement::Kind::gravitation, "gravitation", {}, 0, {}, true};
+  const Particle& p1 = system.particles[first];
+  const Particle& p2 = system.particles[second];
+  const VectorExpr d = p2.position - p1.position;
+  const Expr distance = norm(d);
+  // (2.5) U = −G m1 m2 / ‖r2 − r1‖; F_2 = −G m1 m2 (r2 − r1)/‖r2 − r1‖³ = −F_1
+  element.potential = -G * p1.mass * p2.mass / distance;
+  const VectorExpr F2 = (-G * p1.mass * p2.mass / GiNaC::pow(distance, 3)) * d;
+  element.forces.push_back({second, F2});
+  element.forces.push_back({first, -F2});
+  return element;
+}
+
+}  // namespace unidyn

@@ -1,0 +1,53 @@
+// Name resolution for model expressions.
+#include "unidyn/model/scope.hpp"
+
+namespace unidyn {
+
+std::optional<Value> SystemScope::lookup(std::string_view name) const {
+  if (const auto it = extra_.find(name); it != extra_.end()) return it->second;
+  const std::string key(name);
+  if (key == "t") return Value::of(system_.time());
+  if (const auto p = system_.find_parameter(key)) return Value::of(system_.parameters[*p].symbol);
+  if (const auto q = system_.find_coordinate(key)) {
+    return Value::of(system_.coordinates()[*q].value);
+  }
+  // Members: P.position, P.velocity, P.acceleration, P.mass of a particle; c.lambda of a
+  // constraint.
+  const std::size_t dot = key.find('.');
+  if (dot == std::string::npos) return std::nullopt;
+  const std::string owner = key.substr(0, dot);
+  const std::string member = key.substr(dot + 1);
+  for (const auto& c : system_.constraints) {
+    if (c.name == owner && member == "lambda") return Value::of(c.multiplier);
+  }
+  const auto p = system_.find_particle(owner);
+  if (!p) return std::nullopt;
+  if (member == "position") return Value::of(system_.particles[*p].position);
+  if (member == "velocity") return Value::of(system_.velocity(*p));
+  if (member == "acceleration") return Value::of(system_.acceleration(*p));
+  if (member == "mass") return Value::of(system_.particles[*p].mass);
+  return std::nullopt;
+}
+
+std::optional<Expr> SystemScope::rate(std::string_view name) const {
+  if (const auto q = system_.find_coordinate(std::string(name))) {
+    return Expr(system_.coordinates()[*q].rate);
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> SystemScope::names() const {
+  std::vector<std::string> all{"t"};
+  for (const auto& [name, value] : extra_) all.push_back(name);
+  for (const auto& p : system_.parameters) all.push_back(p.name);
+  for (const auto& q : system_.coordinates()) all.push_back(q.name);
+  for (const auto& c : system_.constraints) all.push_back(c.name + ".lambda");
+  for (const auto& p : system_.particles) {
+    for (const char* member : {".position", ".velocity", ".acceleration", ".mass"}) {
+      all.push_back(p.name + member);
+    }
+  }
+  return all;
+}
+
+}  // namespace unidyn

@@ -1,0 +1,166 @@
+// Compiled equations of motion and the solution for q̈ and λ.
+#include "unidyn/numeric/compiled_system.hpp"
+
+#include <stdexcept>
+
+namespace unidyn {
+namespace {
+
+// Tape inputs [t, q, q̇, p] (with_accelerations: [t, q, q̇, q̈, λ, p]).
+std::vector<Expr> tape_inputs(const System& system, bool with_accelerations) {
+  std::vector<Expr> inputs{system.time()};
+  for (const auto& q : system.coordinates()) inputs.push_back(q.value);
+  for (const auto& q : system.coordinates()) inputs.push_back(q.rate);
+  if (with_accelerations) {
+    for (const auto& q : system.coordinates()) inputs.push_back(q.acceleration);
+    for (const auto& c : system.constraints) inputs.push_back(c.multiplier);
+  }
+  for (const auto& p : system.parameters) inputs.push_back(p.symbol);
+  return inputs;
+}
+
+Tape compile_dynamics(const System& system, const EquationsOfMotion& eq) {
+  std::vector<Expr> outputs = eq.mass_matrix.data;
+  outputs.insert(outputs.end(), eq.forcing.begin(), eq.forcing.end());
+  outputs.insert(outputs.end(), eq.constraint_matrix.data.begin(), eq.constraint_matrix.data.end());
+  outputs.insert(outputs.end(), eq.constraint_bias.begin(), eq.constraint_bias.end());
+  return Tape::compile(outputs, tape_inputs(system, false));
+}
+
+Tape compile_constraints(const System& system, const EquationsOfMotion& eq) {
+  std::vector<Expr> outputs = eq.constraint_matrix.data;
+  outputs.insert(outputs.end(), eq.constraint_velocity_term.begin(),
+                 eq.constraint_velocity_term.end());
+  outputs.insert(outputs.end(), eq.constraint_position.begin(), eq.constraint_position.end());
+  return Tape::compile(outputs, tape_inputs(system, false));
+}
+
+Tape compile_observer(const System& system, const EquationsOfMotion& eq) {
+  std::vector<Expr> outputs{eq.kinetic_energy, eq.potential_energy};
+  for (const auto& o : system.outputs) outputs.push_back(o.expression);
+  for (const auto& o : system.conserved) outputs.push_back(o.expression);
+  return Tape::compile(outputs, tape_inputs(system, true));
+}
+
+}  // namespace
+
+CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& equations)
+    : n_(system.coordinates().size()),
+      m_(system.constraints.size()),
+      p_(system.parameters.size()),
+      dynamics_(compile_dynamics(system, equations)),
+      constraints_(compile_constraints(system, equations)),
+      observer_(compile_observer(system, equations)) {
+  observation_names_ = {"kinetic_energy", "potential_energy"};
+  for (const auto& o : system.outputs) observation_names_.push_back(o.name);
+  for (const auto& o : system.conserved) observation_names_.push_back(o.name);
+  for (const auto& c : system.constraints) {
+    is_position_.push_back(c.kind == Constraint::Kind::position);
+  }
+}
+
+CompiledSystemData CompiledSystem::make_data() const {
+  CompiledSystemData data;
+  data.workspace.reserve(dynamics_);
+  data.workspace.reserve(constraints_);
+  data.workspace.reserve(observer_);
+  data.inputs.resize(1 + 4 * n_ + m_ + p_);
+  data.outputs.resize(
+      std::max({dynamics_.output_count(), constraints_.output_count(), observer_.output_count()}));
+  data.mass_matrix.resize(n_, n_);
+  data.forcing.resize(n_);
+  data.constraint_matrix.resize(m_, n_);
+  data.constraint_bias.resize(m_);
+  data.constraint_velocity_term.resize(m_);
+  data.constraint_position.resize(m_);
+  return data;
+}
+
+void CompiledSystem::load_state(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                std::span<const double> parameters,
+                                CompiledSystemData& data) const {
+  if (parameters.size() != p_) throw std::invalid_argument("wrong number of parameter values");
+  data.inputs[0] = t;
+  for (std::size_t i = 0; i < n_; ++i) {
+    data.inputs[1 + i] = q[static_cast<Eigen::Index>(i)];
+    data.inputs[1 + n_ + i] = qdot[static_cast<Eigen::Index>(i)];
+  }
+  for (std::size_t k = 0; k < p_; ++k) data.inputs[1 + 2 * n_ + k] = parameters[k];
+}
+
+void CompiledSystem::solve(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                           std::span<const double> parameters, Eigen::VectorXd& qddot,
+                           Eigen::VectorXd& lambda, CompiledSystemData& data) const {
+  load_state(t, q, qdot, parameters, data);
+  const std::span<const double> inputs(data.inputs.data(), 1 + 2 * n_ + p_);
+  dynamics_.evaluate(inputs, std::span(data.outputs.data(), dynamics_.output_count()),
+                     data.workspace);
+  const double* out = data.outputs.data();
+  const auto N = static_cast<Eigen::Index>(n_);
+  const auto Mc = static_cast<Eigen::Index>(m_);
+  data.mass_matrix =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          out, N, N);
+  data.forcing = Eigen::Map<const Eigen::VectorXd>(out + n_ * n_, N);
+  data.constraint_matrix =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          out + n_ * n_ + n_, Mc, N);
+  data.constraint_bias = Eigen::Map<const Eigen::VectorXd>(out + n_ * n_ + n_ + m_ * n_, Mc);
+
+  // M = L Lᵀ: the mass matrix of a well-posed model is positive definite
+  const Eigen::LLT<Eigen::MatrixXd> llt(data.mass_matrix);
+  if (llt.info() != Eigen::Success || !data.mass_matrix.allFinite()) {
+    throw std::runtime_error("the mass matrix is singular or not positive definite at t = " +
+                             std::to_string(t) + " (a singular configuration of the coordinates?)");
+  }
+  qddot = llt.solve(data.forcing);
+  lambda.resize(Mc);
+  if (m_ > 0) {
+    // (A M⁻¹ Aᵀ) λ = −b − A M⁻¹ f, then q̈ = M⁻¹ (f + Aᵀ λ)
+    const Eigen::MatrixXd MinvAt = llt.solve(data.constraint_matrix.transpose());
+    const Eigen::MatrixXd schur = data.constraint_matrix * MinvAt;
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(schur);
+    const double scale = schur.diagonal().cwiseAbs().maxCoeff();
+    if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * scale)) {
+      throw std::runtime_error("the constraints are dependent at t = " + std::to_string(t) +
+                               " (A M⁻¹ Aᵀ is singular)");
+    }
+    lambda = ldlt.solve(-data.constraint_bias - data.constraint_matrix * qddot);
+    qddot += MinvAt * lambda;
+  }
+}
+
+void CompiledSystem::constraints(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                 std::span<const double> parameters,
+                                 CompiledSystemData& data) const {
+  load_state(t, q, qdot, parameters, data);
+  const std::span<const double> inputs(data.inputs.data(), 1 + 2 * n_ + p_);
+  constraints_.evaluate(inputs, std::span(data.outputs.data(), constraints_.output_count()),
+                        data.workspace);
+  const double* out = data.outputs.data();
+  const auto N = static_cast<Eigen::Index>(n_);
+  const auto Mc = static_cast<Eigen::Index>(m_);
+  data.constraint_matrix =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          out, Mc, N);
+  data.constraint_velocity_term = Eigen::Map<const Eigen::VectorXd>(out + m_ * n_, Mc);
+  data.constraint_position = Eigen::Map<const Eigen::VectorXd>(out + m_ * n_ + m_, Mc);
+}
+
+void CompiledSystem::observe(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                             const Eigen::VectorXd& qddot, const Eigen::VectorXd& lambda,
+                             std::span<const double> parameters, std::span<double> values,
+                             CompiledSystemData& data) const {
+  // Inputs [t, q, q̇, q̈, λ, p]
+  std::vector<double>& in = data.inputs;
+  in[0] = t;
+  std::size_t k = 1;
+  for (const Eigen::VectorXd* v : {&q, &qdot, &qddot}) {
+    for (Eigen::Index i = 0; i < v->size(); ++i) in[k++] = (*v)[i];
+  }
+  for (Eigen::Index i = 0; i < lambda.size(); ++i) in[k++] = lambda[i];
+  for (double p : parameters) in[k++] = p;
+  observer_.evaluate(std::span<const double>(in.data(), k), values, data.workspace);
+}
+
+}  // namespace unidyn

@@ -1,0 +1,672 @@
+// Instruction tape: compilation of GiNaC expressions to a register program, and its evaluation.
+//
+// Compilation runs in passes: (1) expressions → instructions on virtual registers in SSA form,
+// with common subexpressions shared by GiNaC structural equality and by instruction value
+// numbering, constants folded; (2) sin and cos of one argument fused into sincos; (3) dead
+// instructions removed; (4) virtual registers mapped to reusable physical registers.
+#include "unidyn/numeric/tape.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <compare>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+#include <tuple>
+#include <unordered_map>
+#include <utility>
+
+namespace unidyn {
+
+namespace {
+
+using GiNaC::ex;
+using GiNaC::is_a;
+using GiNaC::is_exactly_a;
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+// Integer exponents up to this size become multiplications; larger ones use std::pow.
+constexpr long kMaxMultipliedPower = 64;
+
+// Execute one instruction on the registers r: the single definition of every operation, used
+// by evaluation and by compile-time constant folding alike. Operands are read before writing.
+inline void execute(const TapeInstruction& i, double* r) {
+  const double x = r[i.a];
+  switch (i.op) {
+    case TapeOp::add:
+      r[i.dst] = x + r[i.b];
+      break;
+    case TapeOp::sub:
+      r[i.dst] = x - r[i.b];
+      break;
+    case TapeOp::mul:
+      r[i.dst] = x * r[i.b];
+      break;
+    case TapeOp::div:
+      r[i.dst] = x / r[i.b];
+      break;
+    case TapeOp::neg:
+      r[i.dst] = -x;
+      break;
+    case TapeOp::recip:
+      r[i.dst] = 1.0 / x;
+      break;
+    case TapeOp::sqrt:
+      r[i.dst] = std::sqrt(x);
+      break;
+    case TapeOp::pow:
+      r[i.dst] = std::pow(x, r[i.b]);
+      break;
+    case TapeOp::sin:
+      r[i.dst] = std::sin(x);
+      break;
+    case TapeOp::cos:
+      r[i.dst] = std::cos(x);
+      break;
+    case TapeOp::sincos:
+      r[i.dst] = std::sin(x);
+      r[i.b] = std::cos(x);
+      break;
+    case TapeOp::tan:
+      r[i.dst] = std::tan(x);
+      break;
+    case TapeOp::asin:
+      r[i.dst] = std::asin(x);
+      break;
+    case TapeOp::acos:
+      r[i.dst] = std::acos(x);
+      break;
+    case TapeOp::atan:
+      r[i.dst] = std::atan(x);
+      break;
+    case TapeOp::atan2:
+      r[i.dst] = std::atan2(x, r[i.b]);
+      break;
+    case TapeOp::sinh:
+      r[i.dst] = std::sinh(x);
+      break;
+    case TapeOp::cosh:
+      r[i.dst] = std::cosh(x);
+      break;
+    case TapeOp::tanh:
+      r[i.dst] = std::tanh(x);
+      break;
+    case TapeOp::exp:
+      r[i.dst] = std::exp(x);
+      break;
+    case TapeOp::log:
+      r[i.dst] = std::log(x);
+      break;
+    case TapeOp::abs:
+      r[i.dst] = std::fabs(x);
+      break;
+    case TapeOp::sign:
+      r[i.dst] = x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0);
+      break;
+    case TapeOp::step:
+      r[i.dst] = x > 0.0 ? 1.0 : (x < 0.0 ? 0.0 : 0.5);
+      break;
+  }
+}
+
+// Value of a single-result operation on numbers (for constant folding).
+double fold(TapeOp op, double x, double y) {
+  double r[3] = {x, y, 0.0};
+  execute(TapeInstruction{op, 2, 0, 1}, r);
+  return r[2];
+}
+
+// Name of an operation in listings.
+const char* op_name(TapeOp op) {
+  static constexpr const char* names[] = {"add",  "sub",  "mul",  "div",   "neg",    "recip",
+                                          "sqrt", "pow",  "sin",  "cos",   "sincos", "tan",
+                                          "asin", "acos", "atan", "atan2", "sinh",   "cosh",
+                                          "tanh", "exp",  "log",  "abs",   "sign",   "step"};
+  return names[static_cast<std::size_t>(op)];
+}
+
+// Whether an operation takes two operands.
+bool is_binary(TapeOp op) {
+  switch (op) {
+    case TapeOp::add:
+    case TapeOp::sub:
+    case TapeOp::mul:
+    case TapeOp::div:
+    case TapeOp::pow:
+    case TapeOp::atan2:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// The printed form of an expression, for error messages.
+std::string str(const ex& e) {
+  std::ostringstream os;
+  os << e;
+  return os.str();
+}
+
+[[noreturn]] void fail(const std::string& what, const ex& e) {
+  throw std::invalid_argument("Tape::compile: " + what + ": " + str(e));
+}
+
+// FNV-1a: a hash of text that is the same in every run.
+std::uint64_t hash_text(std::string_view text) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (const char c : text) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
+  return h;
+}
+
+// Combine a hash with the next one, order-sensitively.
+std::uint64_t mix(std::uint64_t h, std::uint64_t next) {
+  return h ^ (next + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2));
+}
+
+// A value during compilation: an input, a constant or a virtual (single-assignment) temporary.
+struct Value {
+  enum class Kind : std::uint8_t { input, constant, temp };
+  Kind kind = Kind::temp;
+  std::uint32_t index = 0;
+
+  auto operator<=>(const Value&) const = default;
+};
+
+// An instruction on virtual registers; dst2 is the cosine of a sincos, else kNone.
+struct Node {
+  TapeOp op;
+  Value a;
+  Value b;
+  std::uint32_t dst;
+  std::uint32_t dst2 = kNone;
+};
+
+// The numeric coefficient of a term of a sum (1 if it has none).
+GiNaC::numeric coefficient(const ex& term) {
+  if (is_exactly_a<GiNaC::numeric>(term)) return GiNaC::ex_to<GiNaC::numeric>(term);
+  if (is_exactly_a<GiNaC::mul>(term) && term.nops() > 0) {
+    const ex last = term.op(term.nops() - 1);
+    if (is_exactly_a<GiNaC::numeric>(last)) return GiNaC::ex_to<GiNaC::numeric>(last);
+  }
+  return 1;
+}
+
+// A power with a real negative numeric exponent: a factor of a denominator.
+bool is_reciprocal_factor(const ex& factor) {
+  if (!is_exactly_a<GiNaC::power>(factor)) return false;
+  const ex exponent = factor.op(1);
+  return is_exactly_a<GiNaC::numeric>(exponent) &&
+         GiNaC::ex_to<GiNaC::numeric>(exponent).is_negative();
+}
+
+// The supported functions: GiNaC name → operation and number of arguments.
+std::optional<std::pair<TapeOp, std::size_t>> function_op(const std::string& name) {
+  static const std::map<std::string, std::pair<TapeOp, std::size_t>> table = {
+      {"sin", {TapeOp::sin, 1}},     {"cos", {TapeOp::cos, 1}},   {"tan", {TapeOp::tan, 1}},
+      {"asin", {TapeOp::asin, 1}},   {"acos", {TapeOp::acos, 1}}, {"atan", {TapeOp::atan, 1}},
+      {"atan2", {TapeOp::atan2, 2}}, {"sinh", {TapeOp::sinh, 1}}, {"cosh", {TapeOp::cosh, 1}},
+      {"tanh", {TapeOp::tanh, 1}},   {"exp", {TapeOp::exp, 1}},   {"log", {TapeOp::log, 1}},
+      {"abs", {TapeOp::abs, 1}},     {"csgn", {TapeOp::sign, 1}}, {"step", {TapeOp::step, 1}}};
+  const auto found = table.find(name);
+  if (found == table.end()) return std::nullopt;
+  return found->second;
+}
+
+// The program the passes produce, before it becomes a Tape.
+struct Program {
+  std::vector<double> constants;
+  std::vector<TapeInstruction> instructions;
+  std::vector<std::uint32_t> outputs;
+  std::size_t register_count = 0;
+};
+
+// Pass 1: expressions → SSA instructions, with CSE and constant folding.
+class Builder {
+ public:
+  explicit Builder(const std::vector<ex>& inputs) {
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      if (!GiNaC::is_a<GiNaC::symbol>(inputs[i])) fail("an input is not a symbol", inputs[i]);
+      const bool fresh = inputs_.emplace(inputs[i], static_cast<std::uint32_t>(i)).second;
+      if (!fresh) fail("input symbol listed twice", inputs[i]);
+    }
+  }
+
+  // The value of e; every structurally equal subexpression is compiled once.
+  Value compile(const ex& e) {
+    if (const auto found = memo_.find(e); found != memo_.end()) return found->second;
+    const Value v = compile_uncached(e);
+    if (v.kind == Value::Kind::constant && !std::isfinite(constants_[v.index]))
+      fail("constant subexpression is not a finite real number", e);
+    memo_.emplace(e, v);
+    return v;
+  }
+
+  const std::vector<double>& constants() const { return constants_; }
+  std::vector<Node>& nodes() { return nodes_; }
+  std::uint32_t temp_count() const { return temp_count_; }
+
+ private:
+  // Dispatch on the GiNaC class.
+  Value compile_uncached(const ex& e) {
+    if (is_exactly_a<GiNaC::numeric>(e)) return compile_numeric(GiNaC::ex_to<GiNaC::numeric>(e));
+    if (is_a<GiNaC::symbol>(e)) return compile_symbol(e);
+    if (is_exactly_a<GiNaC::constant>(e)) return compile_constant(e);
+    if (is_exactly_a<GiNaC::add>(e)) return compile_add(e);
+    if (is_exactly_a<GiNaC::mul>(e)) return compile_mul(e);
+    if (is_exactly_a<GiNaC::power>(e)) return compile_power(e);
+    if (is_a<GiNaC::fderivative>(e)) fail("unevaluated derivative", e);
+    if (is_exactly_a<GiNaC::function>(e)) return compile_function(e);
+    fail(std::string("unsupported expression (GiNaC class ") +
+             GiNaC::ex_to<GiNaC::basic>(e).class_name() + ")",
+         e);
+  }
+
+  // Real numbers (exact rationals rounded to double); complex ones are refused.
+  Value compile_numeric(const GiNaC::numeric& n) {
+    if (!n.is_real()) fail("complex number", n);
+    return constant(n.to_double());
+  }
+
+  // An input symbol: its register; any other symbol is refused.
+  Value compile_symbol(const ex& e) {
+    const auto found = inputs_.find(e);
+    if (found == inputs_.end()) fail("symbol is not among the inputs", e);
+    return {Value::Kind::input, found->second};
+  }
+
+  // Pi; GiNaC's other constants (Euler, Catalan) are refused.
+  Value compile_constant(const ex& e) {
+    if (!e.is_equal(GiNaC::Pi)) fail("unsupported constant", e);
+    return constant(std::numbers::pi);
+  }
+
+  // Sum: positive terms added, terms with a negative coefficient subtracted.
+  Value compile_add(const ex& e) {
+    std::vector<ex> plus, minus;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      const ex term = e.op(i);
+      if (coefficient(term).is_negative()) {
+        minus.push_back(-term);
+      } else {
+        plus.push_back(term);
+      }
+    }
+    if (plus.empty()) return emit(TapeOp::neg, compile(-e));
+    sort_reproducibly(plus);
+    sort_reproducibly(minus);
+    Value sum = compile(plus.front());
+    for (std::size_t i = 1; i < plus.size(); ++i) sum = emit(TapeOp::add, sum, compile(plus[i]));
+    for (const ex& term : minus) sum = emit(TapeOp::sub, sum, compile(term));
+    return sum;
+  }
+
+  // Product: coefficient × (numerator factors) / (denominator factors).
+  Value compile_mul(const ex& e) {
+    const GiNaC::numeric c = coefficient(e);
+    GiNaC::exvector factors;
+    for (std::size_t i = 0; i < (c.is_equal(1) ? e.nops() : e.nops() - 1); ++i)
+      factors.push_back(e.op(i));
+    if (!c.is_equal(1)) return scale(c, compile(GiNaC::mul(factors)), e);
+    GiNaC::exvector numerator, denominator;
+    for (const ex& factor : factors) {
+      if (is_reciprocal_factor(factor)) {
+        denominator.push_back(GiNaC::pow(factor.op(0), -factor.op(1)));
+      } else {
+        numerator.push_back(factor);
+      }
+    }
+    if (denominator.empty()) return product(numerator);
+    const Value below = compile(GiNaC::mul(denominator));
+    if (numerator.empty()) return emit(TapeOp::recip, below);
+    return emit(TapeOp::div, compile(GiNaC::mul(numerator)), below);
+  }
+
+  // c · v, with c = −1 as a negation.
+  Value scale(const GiNaC::numeric& c, Value v, const ex& e) {
+    if (!c.is_real()) fail("complex number " + str(c) + " in", e);
+    if (c.is_equal(-1)) return emit(TapeOp::neg, v);
+    return emit(TapeOp::mul, compile_numeric(c), v);
+  }
+
+  // Left fold of a product of factors with positive or symbolic exponents.
+  // Factors in register order, so that products sharing factors share partial products.
+  Value product(GiNaC::exvector factors) {
+    sort_reproducibly(factors);
+    std::vector<Value> values;
+    for (const ex& f : factors) values.push_back(compile(f));
+    std::sort(values.begin(), values.end());
+    Value p = values.front();
+    for (std::size_t i = 1; i < values.size(); ++i) p = emit(TapeOp::mul, p, values[i]);
+    return p;
+  }
+
+  // base^exponent: integer and half-integer exponents by multiplication and sqrt, else std::pow.
+  Value compile_power(const ex& e) {
+    const ex exponent = e.op(1);
+    if (!is_exactly_a<GiNaC::numeric>(exponent))
+      return emit(TapeOp::pow, compile(e.op(0)), compile(exponent));
+    const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(exponent);
+    if (!n.is_real()) fail("complex number", exponent);
+    const Value base = compile(e.op(0));
+    const double d = n.to_double();
+    const double twice = 2.0 * d;
+    if (std::floor(twice) != twice || std::fabs(twice) > 2.0 * kMaxMultipliedPower)
+      return emit(TapeOp::pow, base, constant(d));
+    const auto halves = static_cast<long>(twice);
+    if (halves < 0) return emit(TapeOp::recip, half_power(base, -halves));
+    return half_power(base, halves);
+  }
+
+  // base^(halves/2) for halves > 0: x^k or x^k · √x.
+  Value half_power(Value base, long halves) {
+    if (halves % 2 == 0) return integer_power(base, halves / 2);
+    const Value root = emit(TapeOp::sqrt, base);
+    if (halves == 1) return root;
+    return emit(TapeOp::mul, integer_power(base, halves / 2), root);
+  }
+
+  // base^n for n ≥ 1 by repeated squaring; value numbering shares the partial powers.
+  Value integer_power(Value base, long n) {
+    if (n == 1) return base;
+    if (n % 2 == 1) return emit(TapeOp::mul, integer_power(base, n - 1), base);
+    const Value half = integer_power(base, n / 2);
+    return emit(TapeOp::mul, half, half);
+  }
+
+  // One of the supported functions, by GiNaC name.
+  Value compile_function(const ex& e) {
+    const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    const auto op = function_op(name);
+    if (!op) fail("unsupported function " + name, e);
+    if (e.nops() != op->second) fail("wrong number of arguments to " + name, e);
+    const Value a = compile(e.op(0));
+    return emit(op->first, a, op->second == 2 ? compile(e.op(1)) : a);
+  }
+
+  // A constant register, one per distinct value.
+  Value constant(double v) {
+    const auto bits = std::bit_cast<std::uint64_t>(v);
+    const auto [found, fresh] =
+        constant_index_.emplace(bits, static_cast<std::uint32_t>(constants_.size()));
+    if (fresh) constants_.push_back(v);
+    return {Value::Kind::constant, found->second};
+  }
+
+  // Append an instruction unless its operands are constants (folded) or the same instruction
+  // exists already (value numbering; operands of + and × in canonical order).
+  Value emit(TapeOp op, Value a, Value b) {
+    if (a.kind == Value::Kind::constant && b.kind == Value::Kind::constant)
+      return constant(fold(op, constants_[a.index], constants_[b.index]));
+    if ((op == TapeOp::add || op == TapeOp::mul) && b < a) std::swap(a, b);
+    const auto key = std::make_tuple(op, a, b);
+    if (const auto found = numbering_.find(key); found != numbering_.end()) return found->second;
+    const Value v{Value::Kind::temp, temp_count_++};
+    nodes_.push_back(Node{op, a, b, v.index});
+    numbering_.emplace(key, v);
+    return v;
+  }
+  Value emit(TapeOp op, Value a) { return emit(op, a, a); }
+
+  // Terms or factors in the order of their stable keys (ties keep GiNaC's order).
+  void sort_reproducibly(std::vector<ex>& operands) {
+    std::stable_sort(operands.begin(), operands.end(),
+                     [this](const ex& a, const ex& b) { return stable_key(a) < stable_key(b); });
+  }
+
+  // A hash of e's structure that, unlike GiNaC's (which depends on where the library is loaded),
+  // is the same in every run: compiling sums and products in its order makes the tape, and so
+  // every rounding, reproducible from run to run.
+  std::uint64_t stable_key(const ex& e) {
+    if (const auto found = keys_.find(e); found != keys_.end()) return found->second;
+    std::uint64_t key = hash_text(GiNaC::ex_to<GiNaC::basic>(e).class_name());
+    if (is_a<GiNaC::symbol>(e) || is_exactly_a<GiNaC::numeric>(e) ||
+        is_exactly_a<GiNaC::constant>(e)) {
+      key = mix(key, hash_text(str(e)));
+    } else {
+      if (is_a<GiNaC::function>(e))
+        key = mix(key, hash_text(GiNaC::ex_to<GiNaC::function>(e).get_name()));
+      std::vector<std::uint64_t> children;
+      for (std::size_t i = 0; i < e.nops(); ++i) children.push_back(stable_key(e.op(i)));
+      if (is_exactly_a<GiNaC::add>(e) || is_exactly_a<GiNaC::mul>(e))
+        std::sort(children.begin(), children.end());
+      for (const std::uint64_t child : children) key = mix(key, child);
+    }
+    keys_.emplace(e, key);
+    return key;
+  }
+
+  std::unordered_map<ex, std::uint32_t, std::hash<ex>, GiNaC::ex_is_equal> inputs_;
+  std::unordered_map<ex, std::uint64_t, std::hash<ex>, GiNaC::ex_is_equal> keys_;
+  std::unordered_map<ex, Value, std::hash<ex>, GiNaC::ex_is_equal> memo_;
+  std::map<std::tuple<TapeOp, Value, Value>, Value> numbering_;
+  std::unordered_map<std::uint64_t, std::uint32_t> constant_index_;
+  std::vector<double> constants_;
+  std::vector<Node> nodes_;
+  std::uint32_t temp_count_ = 0;
+};
+
+// Pass 2: sin(a) and cos(a) become one sincos at the earlier of the two places.
+void fuse_sincos(std::vector<Node>& nodes) {
+  std::map<Value, std::size_t> sines, cosines;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (nodes[i].op == TapeOp::sin) sines.emplace(nodes[i].a, i);
+    if (nodes[i].op == TapeOp::cos) cosines.emplace(nodes[i].a, i);
+  }
+  std::vector<bool> removed(nodes.size(), false);
+  for (const auto& [argument, s] : sines) {
+    const auto c = cosines.find(argument);
+    if (c == cosines.end()) continue;
+    const Node fused{TapeOp::sincos, argument, argument, nodes[s].dst, nodes[c->second].dst};
+    nodes[std::min(s, c->second)] = fused;
+    removed[std::max(s, c->second)] = true;
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (!removed[i]) nodes[kept++] = nodes[i];
+  nodes.resize(kept);
+}
+
+// Pass 3: drop instructions none of whose results reach an output.
+void remove_dead(std::vector<Node>& nodes, const std::vector<Value>& outputs,
+                 std::uint32_t temp_count) {
+  std::vector<bool> live(temp_count, false);
+  const auto mark = [&](Value v) {
+    if (v.kind == Value::Kind::temp) live[v.index] = true;
+  };
+  for (const Value& v : outputs) mark(v);
+  std::vector<bool> keep(nodes.size(), false);
+  for (std::size_t i = nodes.size(); i-- > 0;) {
+    const Node& n = nodes[i];
+    keep[i] = live[n.dst] || (n.dst2 != kNone && live[n.dst2]);
+    if (!keep[i]) continue;
+    mark(n.a);
+    mark(n.b);
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (keep[i]) nodes[kept++] = nodes[i];
+  nodes.resize(kept);
+}
+
+// Pass 4: constants renumbered to those still used, temporaries mapped to physical registers
+// that are reused once their last reader has run.
+class RegisterAllocator {
+ public:
+  RegisterAllocator(std::size_t input_count, const std::vector<double>& constants,
+                    const std::vector<Node>& nodes, const std::vector<Value>& outputs,
+                    std::uint32_t temp_count)
+      : input_count_(static_cast<std::uint32_t>(input_count)),
+        constant_slot_(constants.size(), kNone),
+        temp_slot_(temp_count, kNone),
+        last_use_(temp_count, kNone) {
+    collect_constants(constants, nodes, outputs);
+    find_last_uses(nodes, outputs);
+    next_ = input_count_ + static_cast<std::uint32_t>(program_.constants.size());
+    for (std::size_t i = 0; i < nodes.size(); ++i) lower(nodes[i], i);
+    for (const Value& v : outputs) program_.outputs.push_back(slot(v));
+    program_.register_count = next_;
+  }
+
+  Program take() { return std::move(program_); }
+
+ private:
+  // Keep the constants some instruction or output reads, in first-use order.
+  void collect_constants(const std::vector<double>& constants, const std::vector<Node>& nodes,
+                         const std::vector<Value>& outputs) {
+    const auto use = [&](Value v) {
+      if (v.kind != Value::Kind::constant || constant_slot_[v.index] != kNone) return;
+      constant_slot_[v.index] =
+          input_count_ + static_cast<std::uint32_t>(program_.constants.size());
+      program_.constants.push_back(constants[v.index]);
+    };
+    for (const Node& n : nodes) {
+      use(n.a);
+      use(n.b);
+    }
+    for (const Value& v : outputs) use(v);
+  }
+
+  // Index of the last instruction reading each temporary; outputs live to the end.
+  void find_last_uses(const std::vector<Node>& nodes, const std::vector<Value>& outputs) {
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      for (const Value& v : {nodes[i].a, nodes[i].b})
+        if (v.kind == Value::Kind::temp) last_use_[v.index] = static_cast<std::uint32_t>(i);
+    }
+    for (const Value& v : outputs)
+      if (v.kind == Value::Kind::temp) last_use_[v.index] = kForever;
+  }
+
+  // Read operands, release the registers they die in, then give the results registers.
+  void lower(const Node& n, std::size_t i) {
+    const std::uint32_t a = slot(n.a), b = slot(n.b);
+    release_if_last(n.a, i);
+    if (n.b != n.a) release_if_last(n.b, i);
+    const std::uint32_t dst = acquire(n.dst);
+    const std::uint32_t dst2 = n.dst2 == kNone ? kNone : acquire(n.dst2);
+    if (last_use_[n.dst] == kNone) free_.push_back(dst);
+    if (dst2 != kNone && last_use_[n.dst2] == kNone) free_.push_back(dst2);
+    program_.instructions.push_back(TapeInstruction{n.op, dst, a, dst2 == kNone ? b : dst2});
+  }
+
+  void release_if_last(Value v, std::size_t i) {
+    if (v.kind == Value::Kind::temp && last_use_[v.index] == i)
+      free_.push_back(temp_slot_[v.index]);
+  }
+
+  std::uint32_t acquire(std::uint32_t temp) {
+    std::uint32_t r = next_;
+    if (free_.empty()) {
+      ++next_;
+    } else {
+      r = free_.back();
+      free_.pop_back();
+    }
+    temp_slot_[temp] = r;
+    return r;
+  }
+
+  std::uint32_t slot(Value v) const {
+    switch (v.kind) {
+      case Value::Kind::input:
+        return v.index;
+      case Value::Kind::constant:
+        return constant_slot_[v.index];
+      case Value::Kind::temp:
+        return temp_slot_[v.index];
+    }
+    return kNone;
+  }
+
+  static constexpr std::uint32_t kForever = kNone - 1;
+  std::uint32_t input_count_;
+  std::vector<std::uint32_t> constant_slot_, temp_slot_, last_use_, free_;
+  std::uint32_t next_ = 0;
+  Program program_;
+};
+
+}  // namespace
+
+void TapeWorkspace::reserve(const Tape& tape) {
+  if (registers_.size() < tape.register_count()) registers_.resize(tape.register_count());
+}
+
+Tape Tape::compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs) {
+  // Pass 1, one output at a time so that errors can say which.
+  Builder builder(inputs);
+  std::vector<Value> values;
+  for (std::size_t k = 0; k < outputs.size(); ++k) {
+    try {
+      values.push_back(builder.compile(outputs[k]));
+    } catch (const std::invalid_argument& error) {
+      throw std::invalid_argument(std::string(error.what()) + " (in output " + std::to_string(k) +
+                                  ")");
+    }
+  }
+  // Passes 2–4.
+  std::vector<Node>& nodes = builder.nodes();
+  fuse_sincos(nodes);
+  remove_dead(nodes, values, builder.temp_count());
+  RegisterAllocator allocator(inputs.size(), builder.constants(), nodes, values,
+                              builder.temp_count());
+  Program program = allocator.take();
+  // The tape itself.
+  Tape tape;
+  for (const ex& s : inputs) tape.input_names_.push_back(GiNaC::ex_to<GiNaC::symbol>(s).get_name());
+  tape.constants_ = std::move(program.constants);
+  tape.instructions_ = std::move(program.instructions);
+  tape.output_registers_ = std::move(program.outputs);
+  tape.register_count_ = program.register_count;
+  return tape;
+}
+
+void Tape::evaluate(std::span<const double> inputs, std::span<double> outputs,
+                    TapeWorkspace& workspace) const {
+  if (inputs.size() != input_count() || outputs.size() != output_count())
+    throw std::invalid_argument("Tape::evaluate: expected " + std::to_string(input_count()) +
+                                " inputs and " + std::to_string(output_count()) + " outputs, got " +
+                                std::to_string(inputs.size()) + " and " +
+                                std::to_string(outputs.size()));
+  workspace.reserve(*this);
+  double* r = workspace.registers_.data();
+  // Load inputs and constants, run the program, gather the outputs.
+  std::copy(inputs.begin(), inputs.end(), r);
+  std::copy(constants_.begin(), constants_.end(), r + input_count());
+  for (const TapeInstruction& i : instructions_) execute(i, r);
+  for (std::size_t k = 0; k < outputs.size(); ++k) outputs[k] = r[output_registers_[k]];
+}
+
+std::vector<double> Tape::evaluate(std::span<const double> inputs) const {
+  std::vector<double> outputs(output_count());
+  TapeWorkspace workspace(*this);
+  evaluate(inputs, outputs, workspace);
+  return outputs;
+}
+
+std::string Tape::listing() const {
+  std::ostringstream os;
+  os.precision(17);
+  os << "tape: " << input_count() << " inputs, " << output_count() << " outputs, "
+     << instruction_count() << " instructions, " << register_count() << " registers\n";
+  // Inputs and constants, then the program, then where the outputs are.
+  for (std::size_t i = 0; i < input_count(); ++i)
+    os << "  r" << i << " = input " << input_names_[i] << '\n';
+  for (std::size_t k = 0; k < constants_.size(); ++k)
+    os << "  r" << input_count() + k << " = " << constants_[k] << '\n';
+  for (const TapeInstruction& i : instructions_) {
+    os << "  r" << i.dst;
+    if (i.op == TapeOp::sincos) os << ", r" << i.b;
+    os << " = " << op_name(i.op) << " r" << i.a;
+    if (is_binary(i.op)) os << ", r" << i.b;
+    os << '\n';
+  }
+  for (std::size_t k = 0; k < output_count(); ++k)
+    os << "  out" << k << " = r" << output_registers_[k] << '\n';
+  return os.str();
+}
+
+}  // namespace unidyn

@@ -1,0 +1,64 @@
+// Coordinate symbols and the total time derivative.
+#include "unidyn/symbolic/coordinates.hpp"
+
+#include <cctype>
+
+namespace unidyn {
+namespace {
+
+// GiNaC prints a symbol's LaTeX name verbatim; Greek names get a backslash.
+std::string latex_name(const std::string& name) {
+  static const char* const greek[] = {
+      "alpha",   "beta",   "gamma", "delta",   "epsilon", "zeta",  "eta",   "theta", "iota",
+      "kappa",   "lambda", "mu",    "nu",      "xi",      "pi",    "rho",   "sigma", "tau",
+      "upsilon", "phi",    "chi",   "psi",     "omega",   "Gamma", "Delta", "Theta", "Lambda",
+      "Xi",      "Pi",     "Sigma", "Upsilon", "Phi",     "Psi",   "Omega"};
+  for (const char* g : greek) {
+    if (name == g) return std::string("\\") + name;
+  }
+  // x1 → x_{1}
+  std::size_t digits = name.size();
+  while (digits > 0 && std::isdigit(static_cast<unsigned char>(name[digits - 1]))) --digits;
+  if (digits > 0 && digits < name.size()) {
+    return latex_name(name.substr(0, digits)) + "_{" + name.substr(digits) + "}";
+  }
+  if (name.size() > 1) return "\\mathrm{" + name + "}";
+  return name;
+}
+
+}  // namespace
+
+CoordinateSymbols::CoordinateSymbols(const std::string& coordinate_name)
+    : name(coordinate_name),
+      value(GiNaC::realsymbol(coordinate_name, latex_name(coordinate_name))),
+      rate(GiNaC::realsymbol(coordinate_name + "'", "\\dot{" + latex_name(coordinate_name) + "}")),
+      acceleration(GiNaC::realsymbol(coordinate_name + "''",
+                                     "\\ddot{" + latex_name(coordinate_name) + "}")) {}
+
+Configuration::Configuration() : time_(GiNaC::realsymbol("t")) {}
+
+std::size_t Configuration::add(const std::string& name) {
+  coordinates_.emplace_back(name);
+  return coordinates_.size() - 1;
+}
+
+Expr Configuration::total_derivative(const Expr& f) const {
+  // (1.8) ḟ = ∂f/∂t + Σ ∂f/∂q q̇ + Σ ∂f/∂q̇ q̈
+  Expr result = f.diff(time_);
+  for (const auto& q : coordinates_) {
+    result += f.diff(q.value) * q.rate + f.diff(q.rate) * q.acceleration;
+  }
+  return result;
+}
+
+VectorExpr Configuration::total_derivative(const VectorExpr& v) const {
+  return {total_derivative(v[0]), total_derivative(v[1]), total_derivative(v[2])};
+}
+
+GiNaC::exmap Configuration::zero_accelerations() const {
+  GiNaC::exmap map;
+  for (const auto& q : coordinates_) map[q.acceleration] = 0;
+  return map;
+}
+
+}  // namespace unidyn
