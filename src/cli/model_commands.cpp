@@ -128,14 +128,16 @@ int run_check(const ModelCommands& c) {
   return agree && constraints_ok ? 0 : 1;
 }
 
+// The model's simulate: settings with the command line's overrides.
 SimulationOptions options_for(const System& system, const ModelCommands& c) {
-  SimulationOptions o;
-  o.t_end = c.t_end > 0 ? c.t_end : system.simulate.t_end;
-  o.output_step = c.output_step > 0 ? c.output_step : system.simulate.output_step;
-  o.method = c.integrator.empty() ? system.simulate.method : c.integrator;
-  o.rtol = c.rtol > 0 ? c.rtol : system.simulate.rtol;
-  o.atol = std::min(system.simulate.atol, o.rtol * 1e-2);
-  o.step = system.simulate.step;
+  SimulationOptions o = simulation_options(system.simulate);
+  if (c.t_end > 0) o.t_end = c.t_end;
+  if (c.output_step > 0) o.output_step = c.output_step;
+  if (!c.integrator.empty()) o.method = c.integrator;
+  if (c.rtol > 0) {
+    o.rtol = c.rtol;
+    o.atol = std::min(system.simulate.atol, o.rtol * 1e-2);
+  }
   if (o.method != "dopri5" && o.method != "rk4") {
     throw std::invalid_argument("--method must be dopri5 or rk4");
   }

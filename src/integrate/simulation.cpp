@@ -101,6 +101,17 @@ std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunct
 
 }  // namespace
 
+SimulationOptions simulation_options(const SimulationSettings& settings) {
+  SimulationOptions o;
+  o.t_end = settings.t_end;
+  o.output_step = settings.output_step;
+  o.method = settings.method;
+  o.rtol = settings.rtol;
+  o.atol = std::min(settings.atol, settings.rtol * 1e-2);
+  o.step = settings.step;
+  return o;
+}
+
 std::vector<std::string> simulation_columns(const System& system) {
   std::vector<std::string> columns{"t"};
   for (const auto& q : system.coordinates()) columns.push_back(q.name);

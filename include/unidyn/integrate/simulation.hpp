@@ -24,6 +24,9 @@ struct SimulationOptions {
   std::size_t max_steps = 100000000;
 };
 
+// The options a model file's `simulate:` asks for (atol no larger than rtol / 100).
+SimulationOptions simulation_options(const SimulationSettings& settings);
+
 // The state of a system: parameters' values, q, q̇ at t0.
 struct SimulationStart {
   std::vector<double> parameters;

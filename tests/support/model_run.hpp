@@ -1,0 +1,59 @@
+// Running a bundled model through the whole pipeline, for validation tests: model file →
+// Lagrange's equations → compiled system → simulation, with the rows kept in memory.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "unidyn/equations/lagrange.hpp"
+#include "unidyn/integrate/simulation.hpp"
+#include "unidyn/io/model_file.hpp"
+#include "unidyn/numeric/compiled_system.hpp"
+
+namespace unidyn::test {
+
+inline std::string model_path(const std::string& name) {
+  return std::string(UNIDYN_MODELS_DIR) + "/" + name + ".yaml";
+}
+
+struct ModelRun {
+  System system;
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  SimulationSummary summary;
+
+  std::size_t index(const std::string& column) const {
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+      if (columns[i] == column) return i;
+    }
+    throw std::out_of_range("no column " + column);
+  }
+  // The value of a column in a row.
+  double at(std::size_t row, const std::string& column) const { return rows[row][index(column)]; }
+  std::vector<double> column(const std::string& name) const {
+    std::vector<double> values;
+    for (const auto& r : rows) values.push_back(r[index(name)]);
+    return values;
+  }
+};
+
+// Simulates a bundled model with NAME=VALUE overrides; `adjust` may change the options (t_end,
+// output_step, method, rtol) that the model file sets.
+inline ModelRun run_model(const std::string& name,
+                          const std::vector<std::pair<std::string, double>>& overrides = {},
+                          const std::function<void(SimulationOptions&)>& adjust = {}) {
+  ModelRun run{load_model(model_path(name)), {}, {}, {}};
+  SimulationOptions options = simulation_options(run.system.simulate);
+  if (adjust) adjust(options);
+  const CompiledSystem compiled(run.system, lagrange_equations(run.system));
+  run.columns = simulation_columns(run.system);
+  run.summary = simulate(run.system, compiled, initial_state(run.system, overrides), options,
+                         [&](const std::vector<double>& row) { run.rows.push_back(row); });
+  return run;
+}
+
+}  // namespace unidyn::test
