@@ -1,12 +1,19 @@
 #!/usr/bin/env bash
-# Installs the dependencies, builds unidyn and runs the main job on a bundled example:
-# the rotation of the book's worked example §6.5.1 in every parametrisation.
+# Installs the dependencies, builds unidyn and runs the main job on a bundled example: the
+# spherical pendulum — its equations of motion by Lagrange and by Newton, the check that they
+# agree, and a 100 s simulation (CSV in out/, summary on the terminal).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash scripts/setup.sh
 bash scripts/build.sh
-./build/unidyn rotation show --from matrix \
-  0.835959 -0.283542 -0.469869 \
-  0.271321 0.957764 -0.0952472 \
-  0.47703 -0.0478627 0.877583
+mkdir -p out
+model=spherical-pendulum
+echo
+./build/unidyn derive "$model"
+echo
+./build/unidyn derive "$model" --method newton-euler
+echo
+./build/unidyn check "$model"
+echo
+./build/unidyn simulate "$model" --t-end 100 -o "out/$model.csv"

@@ -9,13 +9,6 @@
 #include "unidyn/rotation/errors.hpp"
 #include "unidyn/symbolic/expression.hpp"
 
-// CLN (Debian 1.3.6) leaks 26 bytes while it initialises; LeakSanitizer must not count that.
-#if defined(__SANITIZE_ADDRESS__)
-extern "C" const char* __lsan_default_suppressions() {
-  return "leak:libcln.so\n";
-}
-#endif
-
 int main(int argc, char** argv) {
   CLI::App app{"unidyn: engineering dynamics after O'Reilly, Intermediate Dynamics for Engineers"};
   app.require_subcommand(1);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "unidyn/equations/equivalence.hpp"
 #include "unidyn/equations/lagrange.hpp"
@@ -154,11 +155,16 @@ int run_simulate(const ModelCommands& c) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
 
   const std::string path = c.output.empty() ? "-" : c.output;
-  CsvWriter csv(path);
-  csv.header(simulation_columns(system));
+  std::optional<CsvWriter> csv;
+  try {
+    csv.emplace(path);
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(e.what());  // bad input, not a failed run
+  }
+  csv->header(simulation_columns(system));
   const auto run_start = std::chrono::steady_clock::now();
   const SimulationSummary s = simulate(system, compiled, start, options,
-                                       [&](const std::vector<double>& row) { csv.row(row); });
+                                       [&](const std::vector<double>& row) { csv->row(row); });
   const double run_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
 
@@ -233,10 +239,13 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.simulate = app.add_subcommand("simulate", "Simulate a model: CSV rows and a run summary");
   c.simulate->add_option("model", c.model, "MODEL file or bundled model name")->required();
   c.simulate->add_option("-o,--output", c.output, "CSV file (default: standard output)");
-  c.simulate->add_option("--t-end", c.t_end, "end time");
-  c.simulate->add_option("--output-step", c.output_step, "time between rows");
+  // (0 means "the model's", so a 0 or a negative value given here must be refused, not ignored)
+  c.simulate->add_option("--t-end", c.t_end, "end time")->check(CLI::PositiveNumber);
+  c.simulate->add_option("--output-step", c.output_step, "time between rows")
+      ->check(CLI::PositiveNumber);
   c.simulate->add_option("--method", c.integrator, "dopri5 | rk4");
-  c.simulate->add_option("--rtol", c.rtol, "relative tolerance (dopri5)");
+  c.simulate->add_option("--rtol", c.rtol, "relative tolerance (dopri5)")
+      ->check(CLI::PositiveNumber);
   c.simulate->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
 
   c.check = app.add_subcommand("check", "Newton vs Lagrange agreement, constraint consistency");

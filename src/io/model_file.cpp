@@ -6,9 +6,12 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include "unidyn/model/forces.hpp"
 #include "unidyn/model/scope.hpp"
@@ -19,16 +22,16 @@ namespace {
 
 class ModelReader {
  public:
-  explicit ModelReader(std::string file) : file_(std::move(file)) {}
+  ModelReader(std::string file, std::string_view source)
+      : file_(std::move(file)), source_(source) {}
 
   System read(const YAML::Node& root);
 
  private:
-  // Position of a node; the first character of a quoted scalar's text is one past its mark.
-  SourcePosition at(const YAML::Node& node, bool text_start = false) const {
+  // Position of a node (of its tag, anchor or quote, if it has one).
+  SourcePosition at(const YAML::Node& node) const {
     const YAML::Mark mark = node.Mark();
-    const int quote = (text_start && node.IsScalar() && node.Tag() == "!") ? 1 : 0;
-    return {file_, mark.line + 1, mark.column + 1 + quote};
+    return {file_, mark.line + 1, mark.column + 1};
   }
 
   [[noreturn]] void fail(const YAML::Node& node, const std::string& message) const {
@@ -42,6 +45,7 @@ class ModelReader {
   // Keys outside `allowed` are mistakes (a misspelt key would otherwise be silently ignored).
   void expect_keys(const YAML::Node& node, const std::set<std::string>& allowed,
                    const std::string& what) const {
+    expect_unique_keys(node);
     for (const auto& item : node) {
       const std::string key = item.first.Scalar();
       if (!allowed.count(key)) {
@@ -49,6 +53,16 @@ class ModelReader {
         for (const auto& k : allowed) list += (list.empty() ? "" : ", ") + k;
         throw ModelError(at(item.first), "unknown key '" + key + "' in " + what +
                                              " (expected one of: " + list + ")");
+      }
+    }
+  }
+
+  // YAML keeps only one of two equal keys: the other would be silently lost.
+  void expect_unique_keys(const YAML::Node& node) const {
+    std::set<std::string> seen;
+    for (const auto& item : node) {
+      if (item.first.IsScalar() && !seen.insert(item.first.Scalar()).second) {
+        fail(item.first, "'" + item.first.Scalar() + "' is given twice");
       }
     }
   }
@@ -71,8 +85,33 @@ class ModelReader {
     return x;
   }
 
+  // The text of a scalar as the expression parser should read it, and where it starts.
+  struct ScalarText {
+    std::string text;
+    SourcePosition where;
+  };
+  ScalarText scalar_text(const YAML::Node& node, const std::string& what) const;
+
   Expr scalar_expr(const YAML::Node& node, const Scope& scope, const std::string& what) const {
-    return parse_scalar(scalar(node, what), scope, at(node, true));
+    const ScalarText s = scalar_text(node, what);
+    return parse_scalar(s.text, scope, s.where);
+  }
+
+  // Refuses an expression that depends on the rates der(q) (unless `rates` allows them), on the
+  // accelerations (P.acceleration) or on a multiplier c.lambda: only outputs may.
+  void expect_state_only(const YAML::Node& node, const Expr& e, const System& system,
+                         const std::string& what, bool rates = false) const {
+    for (const auto& q : system.coordinates()) {
+      if (!rates && e.has(q.rate)) fail(node, what + " cannot depend on der(" + q.name + ")");
+      if (e.has(q.acceleration)) fail(node, what + " cannot depend on accelerations");
+    }
+    for (const auto& c : system.constraints) {
+      if (e.has(c.multiplier)) fail(node, what + " cannot depend on " + c.name + ".lambda");
+    }
+  }
+  void expect_state_only(const YAML::Node& node, const VectorExpr& v, const System& system,
+                         const std::string& what, bool rates = false) const {
+    for (int i = 0; i < 3; ++i) expect_state_only(node, v[i], system, what, rates);
   }
 
   // A vector: a YAML list of three scalars, or one vector expression.
@@ -83,7 +122,8 @@ class ModelReader {
       return {scalar_expr(node[0], scope, what), scalar_expr(node[1], scope, what),
               scalar_expr(node[2], scope, what)};
     }
-    return parse_vector(scalar(node, what), scope, at(node, true));
+    const ScalarText s = scalar_text(node, what);
+    return parse_vector(s.text, scope, s.where);
   }
 
   // A name that must not clash with another or with a reserved word.
@@ -116,7 +156,63 @@ class ModelReader {
                                    const std::string& what);
 
   std::string file_;
+  std::string_view source_;
+  std::set<std::string> columns_;  // names of the CSV columns taken so far
 };
+
+// YAML puts tags, anchors, quotes or a block header before a scalar's value, and folds and
+// unindents values over several lines, so the value's characters are not where the node's mark
+// is. The file from the mark on is matched against the value (a run of whitespace matching a run
+// of whitespace); when it matches, that slice of the file is what the parser reads: the same
+// tokens, at their own lines and columns. When it does not (escape sequences), the value is read
+// as if it started right after the quote.
+ModelReader::ScalarText ModelReader::scalar_text(const YAML::Node& node,
+                                                 const std::string& what) const {
+  std::string value = scalar(node, what);
+  const YAML::Mark mark = node.Mark();
+  const std::string_view src = source_;
+  if (mark.pos < 0 || static_cast<std::size_t>(mark.pos) > src.size()) return {value, at(node)};
+  const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+  const auto flow = [](char c) { return c == ',' || c == '[' || c == ']' || c == '{' || c == '}'; };
+  const auto start = static_cast<std::size_t>(mark.pos);
+  std::size_t i = start;
+  while (i < src.size() && (src[i] == '!' || src[i] == '&')) {  // tags and anchors
+    while (i < src.size() && !space(src[i]) && !flow(src[i])) ++i;
+    while (i < src.size() && space(src[i])) ++i;
+  }
+  if (i < src.size() && (src[i] == '"' || src[i] == '\'')) {
+    ++i;
+  } else if (i < src.size() && (src[i] == '|' || src[i] == '>')) {
+    while (i < src.size() && src[i] != '\n') ++i;  // the block header
+  }
+  if (!value.empty() && !space(value[0])) {
+    while (i < src.size() && space(src[i])) ++i;
+  }
+  const std::size_t begin = i;
+  bool same = true;
+  for (std::size_t k = 0; same && k < value.size(); ++k) {
+    if (space(value[k])) {
+      same = i < src.size() && space(src[i]);
+      while (k + 1 < value.size() && space(value[k + 1])) ++k;
+      while (i < src.size() && space(src[i])) ++i;
+    } else {
+      same = i < src.size() && src[i] == value[k];
+      ++i;
+    }
+  }
+  // where `begin` is; columns count characters, as the parser's do
+  int line = mark.line + 1, column = mark.column + 1;
+  for (std::size_t k = start; k < begin; ++k) {
+    if (src[k] == '\n') {
+      ++line;
+      column = 1;
+    } else if ((static_cast<unsigned char>(src[k]) & 0xC0) != 0x80) {
+      ++column;
+    }
+  }
+  if (same && i - begin <= ExpressionLimits::max_length) value = src.substr(begin, i - begin);
+  return {std::move(value), {file_, line, column}};
+}
 
 System ModelReader::read(const YAML::Node& root) {
   if (!root.IsDefined() || root.IsNull())
@@ -144,6 +240,9 @@ System ModelReader::read(const YAML::Node& root) {
   system.initial_rates.assign(system.coordinates().size(), 0);
   if (root["initial"]) read_initial(root["initial"], system);
   if (root["simulate"]) read_simulate(root["simulate"], system);
+  columns_ = {"t", "energy"};
+  for (const auto& q : system.coordinates()) columns_.insert({q.name, "der(" + q.name + ")"});
+  for (const auto& c : system.constraints) columns_.insert("lambda(" + c.name + ")");
   if (root["outputs"]) system.outputs = read_outputs(root["outputs"], system, "outputs");
   if (root["conserved"]) system.conserved = read_outputs(root["conserved"], system, "conserved");
   return system;
@@ -175,7 +274,9 @@ void ModelReader::read_particles(const YAML::Node& node, System& system) {
       fail(spec, "particle '" + name + "' needs mass: and position:");
     const SystemScope scope(system);
     const Expr mass = scalar_expr(spec["mass"], scope, "mass");
+    expect_state_only(spec["mass"], mass, system, "a mass");
     const VectorExpr position = vector_expr(spec["position"], scope, "position");
+    expect_state_only(spec["position"], position, system, "a position");
     system.particles.push_back({name, mass, position, at(item.first)});
   }
 }
@@ -187,7 +288,9 @@ ForcePoint ModelReader::force_point(const YAML::Node& node, const System& system
       return {p, system.particles[*p].position};
     }
   }
-  return {std::nullopt, vector_expr(node, scope, "a point (a particle name or a vector)")};
+  const VectorExpr point = vector_expr(node, scope, "a point (a particle name or a vector)");
+  expect_state_only(node, point, system, "a point");
+  return {std::nullopt, point};
 }
 
 void ModelReader::read_forces(const YAML::Node& node, System& system) {
@@ -199,63 +302,97 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
     const std::string kind = entry.begin()->first.Scalar();
     const YAML::Node& spec = entry.begin()->second;
     SystemScope scope(system);
+    // The two ends of a spring or a damper: not one point, where its direction would be 0/0.
+    const auto ends = [&]() -> std::pair<ForcePoint, ForcePoint> {
+      ForcePoint from = force_point(spec["from"], system, scope);
+      ForcePoint to = force_point(spec["to"], system, scope);
+      const VectorExpr d = to.position - from.position;
+      if (d[0].expand().is_zero() && d[1].expand().is_zero() && d[2].expand().is_zero()) {
+        fail(spec, "a " + kind + " needs two different points: from: and to: are the same");
+      }
+      return {std::move(from), std::move(to)};
+    };
     ForceElement element;
-    if (kind == "gravity") {
-      element = uniform_gravity(system, vector_expr(spec, scope, "gravity"));
-    } else if (kind == "spring") {
-      expect_map(spec, "spring");
-      expect_keys(spec, {"from", "to", "stiffness", "rest_length", "energy"}, "spring");
-      if (!spec["from"] || !spec["to"]) fail(spec, "a spring needs from: and to:");
-      if (!!spec["stiffness"] == !!spec["energy"]) {
-        fail(spec, "a spring needs either stiffness: K or energy: U(s) of its stretch s");
-      }
-      const GiNaC::realsymbol s("s");
-      const Expr rest =
-          spec["rest_length"] ? scalar_expr(spec["rest_length"], scope, "rest_length") : Expr(0);
-      Expr energy;
-      if (spec["stiffness"]) {
-        energy = scalar_expr(spec["stiffness"], scope, "stiffness") * GiNaC::pow(s, 2) / 2;
+    try {
+      if (kind == "gravity") {
+        const VectorExpr g = vector_expr(spec, scope, "gravity");
+        expect_state_only(spec, g, system, "gravity");
+        element = uniform_gravity(system, g);
+      } else if (kind == "spring") {
+        expect_map(spec, "spring");
+        expect_keys(spec, {"from", "to", "stiffness", "rest_length", "energy"}, "spring");
+        if (!spec["from"] || !spec["to"]) fail(spec, "a spring needs from: and to:");
+        if (!!spec["stiffness"] == !!spec["energy"]) {
+          fail(spec, "a spring needs either stiffness: K or energy: U(s) of its stretch s");
+        }
+        const GiNaC::realsymbol s("s");
+        Expr rest = 0;
+        if (spec["rest_length"]) {
+          rest = scalar_expr(spec["rest_length"], scope, "rest_length");
+          expect_state_only(spec["rest_length"], rest, system, "a rest length");
+        }
+        Expr energy;
+        if (spec["stiffness"]) {
+          const Expr K = scalar_expr(spec["stiffness"], scope, "stiffness");
+          expect_state_only(spec["stiffness"], K, system, "a stiffness");
+          energy = K * GiNaC::pow(s, 2) / 2;
+        } else {
+          SystemScope with_stretch(system);
+          with_stretch.define("s", Value::of(s));
+          energy = scalar_expr(spec["energy"], with_stretch, "energy");
+          expect_state_only(spec["energy"], energy, system, "a spring's energy");
+        }
+        const auto [from, to] = ends();
+        element = spring(from, to, rest, s, energy);
+      } else if (kind == "damper") {
+        expect_map(spec, "damper");
+        expect_keys(spec, {"from", "to", "coefficient"}, "damper");
+        if (!spec["from"] || !spec["to"] || !spec["coefficient"]) {
+          fail(spec, "a damper needs from:, to: and coefficient:");
+        }
+        const Expr c = scalar_expr(spec["coefficient"], scope, "coefficient");
+        expect_state_only(spec["coefficient"], c, system, "a damping coefficient", true);
+        const auto [from, to] = ends();
+        element = damper(system, from, to, c);
+      } else if (kind == "force") {
+        expect_map(spec, "force");
+        expect_keys(spec, {"at", "value"}, "force");
+        if (!spec["at"] || !spec["value"]) fail(spec, "a force needs at: (a particle) and value:");
+        const auto p = system.find_particle(scalar(spec["at"], "at"));
+        if (!p) fail(spec["at"], "at: must name a particle");
+        const VectorExpr F = vector_expr(spec["value"], scope, "value");
+        expect_state_only(spec["value"], F, system, "a force", true);
+        element = applied_force(*p, F);
+      } else if (kind == "potential") {
+        const Expr U = scalar_expr(spec, scope, "potential");
+        expect_state_only(spec, U, system, "a potential U(q, t)");
+        element = coordinate_potential(U);
+      } else if (kind == "gravitation") {
+        expect_map(spec, "gravitation");
+        expect_keys(spec, {"between", "G"}, "gravitation");
+        if (!spec["between"] || !spec["G"]) fail(spec, "gravitation needs between: [P, Q] and G:");
+        const YAML::Node& pair = spec["between"];
+        if (!pair.IsSequence() || pair.size() != 2) fail(pair, "between: must list two particles");
+        const auto p1 = system.find_particle(scalar(pair[0], "particle"));
+        const auto p2 = system.find_particle(scalar(pair[1], "particle"));
+        if (!p1) fail(pair[0], "not a particle");
+        if (!p2) fail(pair[1], "not a particle");
+        if (*p1 == *p2) fail(pair, "gravitation needs two different particles");
+        const Expr G = scalar_expr(spec["G"], scope, "G");
+        expect_state_only(spec["G"], G, system, "G");
+        element = gravitation(system, *p1, *p2, G);
       } else {
-        SystemScope with_stretch(system);
-        with_stretch.define("s", Value::of(s));
-        energy = scalar_expr(spec["energy"], with_stretch, "energy");
+        fail(entry.begin()->first, "unknown force '" + kind +
+                                       "' (expected gravity, spring, damper, force, potential or "
+                                       "gravitation)");
       }
-      element = spring(force_point(spec["from"], system, scope),
-                       force_point(spec["to"], system, scope), rest, s, energy);
-    } else if (kind == "damper") {
-      expect_map(spec, "damper");
-      expect_keys(spec, {"from", "to", "coefficient"}, "damper");
-      if (!spec["from"] || !spec["to"] || !spec["coefficient"]) {
-        fail(spec, "a damper needs from:, to: and coefficient:");
-      }
-      element = damper(system, force_point(spec["from"], system, scope),
-                       force_point(spec["to"], system, scope),
-                       scalar_expr(spec["coefficient"], scope, "coefficient"));
-    } else if (kind == "force") {
-      expect_map(spec, "force");
-      expect_keys(spec, {"at", "value"}, "force");
-      if (!spec["at"] || !spec["value"]) fail(spec, "a force needs at: (a particle) and value:");
-      const auto p = system.find_particle(scalar(spec["at"], "at"));
-      if (!p) fail(spec["at"], "at: must name a particle");
-      element = applied_force(*p, vector_expr(spec["value"], scope, "value"));
-    } else if (kind == "potential") {
-      element = coordinate_potential(scalar_expr(spec, scope, "potential"));
-    } else if (kind == "gravitation") {
-      expect_map(spec, "gravitation");
-      expect_keys(spec, {"between", "G"}, "gravitation");
-      if (!spec["between"] || !spec["G"]) fail(spec, "gravitation needs between: [P, Q] and G:");
-      const YAML::Node& pair = spec["between"];
-      if (!pair.IsSequence() || pair.size() != 2) fail(pair, "between: must list two particles");
-      const auto p1 = system.find_particle(scalar(pair[0], "particle"));
-      const auto p2 = system.find_particle(scalar(pair[1], "particle"));
-      if (!p1) fail(pair[0], "not a particle");
-      if (!p2) fail(pair[1], "not a particle");
-      if (*p1 == *p2) fail(pair, "gravitation needs two different particles");
-      element = gravitation(system, *p1, *p2, scalar_expr(spec["G"], scope, "G"));
-    } else {
-      fail(entry.begin()->first, "unknown force '" + kind +
-                                     "' (expected gravity, spring, damper, force, potential or "
-                                     "gravitation)");
+    } catch (const ModelError&) {
+      throw;
+    } catch (const YAML::Exception&) {
+      throw;
+    } catch (const std::exception& e) {
+      // GiNaC refusing to build it, e.g. a division by zero for two particles at one fixed point
+      fail(entry, "this " + kind + " cannot be built: " + e.what());
     }
     element.where = at(entry);
     system.forces.push_back(std::move(element));
@@ -273,15 +410,17 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
       fail(spec,
            "a constraint needs exactly one of position: Ψ(q, t) or velocity: (linear in der(q))");
     }
-    const std::string name = spec["name"] ? scalar(spec["name"], "name")
+    // one name space with parameters, coordinates and particles (c.lambda, lambda(c) columns)
+    const std::string name = spec["name"] ? new_name(spec["name"], system, "constraint")
                                           : "c" + std::to_string(system.constraints.size() + 1);
     Constraint c{
         name,    Constraint::Kind::position,
         0,       GiNaC::realsymbol("lambda(" + name + ")", "\\lambda_{\\mathrm{" + name + "}}"),
         false,   std::nullopt,
         at(spec)};
-    if (!names.insert(c.name).second || system.find_particle(c.name)) {
-      fail(spec["name"], "'" + c.name + "' is already defined");
+    if (!names.insert(c.name).second || system.find_parameter(c.name) ||
+        system.find_coordinate(c.name) || system.find_particle(c.name)) {
+      fail(spec["name"] ? spec["name"] : spec, "'" + c.name + "' is already defined");
     }
     if (spec["position"]) {
       c.kind = Constraint::Kind::position;
@@ -291,9 +430,11 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
           fail(spec["position"],
                "a position constraint cannot depend on der(" + q.name + "); use velocity:");
       }
+      expect_state_only(spec["position"], c.expression, system, "a position constraint");
     } else {
       c.kind = Constraint::Kind::velocity;
       c.expression = scalar_expr(spec["velocity"], scope, "velocity");
+      expect_state_only(spec["velocity"], c.expression, system, "a velocity constraint", true);
       for (const auto& q : system.coordinates()) {
         if (!c.expression.diff(q.rate, 2).is_zero()) {
           fail(spec["velocity"],
@@ -301,8 +442,33 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
                    ")");
         }
       }
+      // Linear: c = c(q̇ = 0) + Σ q̇ ∂c/∂q̇(q̇ = 0) exactly. (The second derivatives miss the
+      // mixed der(x)*der(y) and abs(der(x)), whose second derivative is 0 almost everywhere.)
+      bool linear = false;
+      try {
+        GiNaC::exmap at_rest;
+        for (const auto& q : system.coordinates()) at_rest[q.rate] = 0;
+        Expr residual = c.expression - c.expression.subs(at_rest);
+        for (const auto& q : system.coordinates()) {
+          residual -= q.rate * c.expression.diff(q.rate).subs(at_rest);
+        }
+        linear = residual.expand().is_zero() || residual.normal().is_zero();
+      } catch (const std::exception&) {
+        // such as 1/0 at q̇ = 0: not linear
+      }
+      if (!linear) {
+        fail(spec["velocity"],
+             "a velocity constraint must be linear in the rates der(q), as A(q, t) der(q) + e(q, "
+             "t)");
+      }
     }
-    if (spec["unilateral"]) c.unilateral = scalar(spec["unilateral"], "unilateral") == "true";
+    if (spec["unilateral"]) {
+      const std::string flag = scalar(spec["unilateral"], "unilateral");
+      if (flag != "true" && flag != "false") {
+        fail(spec["unilateral"], "unilateral must be true or false");
+      }
+      c.unilateral = flag == "true";
+    }
     if (spec["friction"]) {
       const YAML::Node& f = spec["friction"];
       expect_map(f, "friction");
@@ -321,6 +487,7 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
 void ModelReader::read_initial(const YAML::Node& node, System& system) {
   expect_map(node, "initial");
   const SystemScope scope(system);
+  std::set<std::string> given;
   for (const auto& item : node) {
     std::string key = scalar(item.first, "an initial value's name");
     bool is_rate = false;
@@ -330,11 +497,20 @@ void ModelReader::read_initial(const YAML::Node& node, System& system) {
     }
     const auto q = system.find_coordinate(key);
     if (!q) fail(item.first, "'" + key + "' is not a coordinate");
+    if (!given.insert(std::string(is_rate ? "der(" : "") + key).second) {
+      fail(item.first, "'" + item.first.Scalar() + "' is given twice");
+    }
     const Expr value = scalar_expr(item.second, scope, "initial value");
-    for (const auto& c : system.coordinates()) {
-      if (value.has(c.value) || value.has(c.rate) || value.has(system.time())) {
-        fail(item.second, "an initial value may use numbers and parameters only");
-      }
+    // a real number once the parameters have their values (no q, der(q), t, accelerations, λ)
+    bool real = false;
+    try {
+      const Expr v = GiNaC::evalf(value.subs(system.parameter_values()));
+      real = GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real();
+    } catch (const std::exception&) {
+      // such as log(0)
+    }
+    if (!real) {
+      fail(item.second, "an initial value must be a real number, from numbers and parameters only");
     }
     (is_rate ? system.initial_rates : system.initial_values)[*q] = value;
   }
@@ -354,15 +530,24 @@ void ModelReader::read_simulate(const YAML::Node& node, System& system) {
   if (!(s.output_step > 0)) fail(node["output_step"], "output_step must be positive");
   if (s.method != "dopri5" && s.method != "rk4")
     fail(node["method"], "method must be dopri5 or rk4");
+  // (the integrators would refuse these only once the run has started)
+  if (!(s.rtol > 0)) fail(node["rtol"], "rtol must be positive");
+  if (!(s.atol > 0)) fail(node["atol"], "atol must be positive");
+  if (s.step < 0) fail(node["step"], "step must not be negative (0: output_step / 10)");
 }
 
 std::vector<Output> ModelReader::read_outputs(const YAML::Node& node, const System& system,
                                               const std::string& what) {
   expect_map(node, what);
+  expect_unique_keys(node);
   const SystemScope scope(system);
   std::vector<Output> outputs;
   for (const auto& item : node) {
     const std::string name = scalar(item.first, "a name");
+    // one CSV column each: not t, q, der(q), energy, lambda(c), nor another output's name
+    if (!columns_.insert(name).second) {
+      fail(item.first, "'" + name + "' is already the name of a CSV column");
+    }
     outputs.push_back({name, scalar_expr(item.second, scope, name), at(item.first)});
   }
   return outputs;
@@ -378,7 +563,10 @@ System parse_model(const std::string& text, const std::string& file) {
     throw ModelError({file, e.mark.line + 1, e.mark.column + 1}, "YAML syntax: " + e.msg);
   }
   try {
-    return ModelReader(file).read(root);
+    // yaml-cpp's marks do not count a byte-order mark
+    std::string_view source = text;
+    if (source.starts_with("\xEF\xBB\xBF")) source.remove_prefix(3);
+    return ModelReader(file, source).read(root);
   } catch (const YAML::Exception& e) {
     throw ModelError({file, e.mark.line + 1, e.mark.column + 1}, e.msg);
   }

@@ -26,6 +26,12 @@ std::optional<Value> SystemScope::lookup(std::string_view name) const {
   if (member == "velocity") return Value::of(system_.velocity(*p));
   if (member == "acceleration") return Value::of(system_.acceleration(*p));
   if (member == "mass") return Value::of(system_.particles[*p].mass);
+  // (1.3) G = m v, H_O = r × m v about the fixed origin, and the areal velocity ½ r × v
+  const Expr& m = system_.particles[*p].mass;
+  const VectorExpr& r = system_.particles[*p].position;
+  if (member == "momentum") return Value::of(m * system_.velocity(*p));
+  if (member == "angular_momentum") return Value::of(cross(r, m * system_.velocity(*p)));
+  if (member == "areal_velocity") return Value::of(cross(r, system_.velocity(*p)) / 2);
   return std::nullopt;
 }
 
@@ -43,7 +49,8 @@ std::vector<std::string> SystemScope::names() const {
   for (const auto& q : system_.coordinates()) all.push_back(q.name);
   for (const auto& c : system_.constraints) all.push_back(c.name + ".lambda");
   for (const auto& p : system_.particles) {
-    for (const char* member : {".position", ".velocity", ".acceleration", ".mass"}) {
+    for (const char* member : {".position", ".velocity", ".acceleration", ".mass", ".momentum",
+                               ".angular_momentum", ".areal_velocity"}) {
       all.push_back(p.name + member);
     }
   }

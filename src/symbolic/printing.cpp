@@ -1,23 +1,24 @@
 // Simplification for display and printing.
 #include "unidyn/symbolic/printing.hpp"
 
+#include <set>
 #include <sstream>
 
 namespace unidyn {
 namespace {
 
-// Every distinct x appearing as sin(x) or cos(x).
-GiNaC::exset trig_arguments(const Expr& e) {
+// Every distinct x appearing as sin(x) or cos(x), in GiNaC's canonical order.
+std::vector<Expr> trig_arguments(const Expr& e) {
   GiNaC::exset found;
-  GiNaC::exset arguments;
   e.find(GiNaC::sin(GiNaC::wild()), found);
   e.find(GiNaC::cos(GiNaC::wild()), found);
+  std::set<Expr, GiNaC::ex_is_less> arguments;
   for (const auto& f : found) arguments.insert(f.op(0));
-  return arguments;
+  return {arguments.begin(), arguments.end()};
 }
 
 // An expanded p, polynomial in v, with every v^k (k ≥ 2) replaced by v^(k−2) (1 − w²): its
-// remainder modulo v² + w² − 1. Anything not polynomial in v is left as it is.
+// remainder modulo v² + w² − 1, unique for each polynomial (the ideal is monic in v).
 Expr reduce_modulo_unit_circle(const Expr& p, const GiNaC::symbol& v, const GiNaC::symbol& w) {
   if (!p.is_polynomial(v)) return p;
   Expr result = p;
@@ -29,26 +30,6 @@ Expr reduce_modulo_unit_circle(const Expr& p, const GiNaC::symbol& v, const GiNa
   return result;
 }
 
-// The smallest of e and its rewrites with sin²x → 1 − cos²x and cos²x → 1 − sin²x. Done on
-// polynomials in s = sin x, c = cos x (numerator and denominator separately), so that the result
-// does not depend on the order GiNaC happens to keep terms in.
-Expr reduce_pythagorean(const Expr& e, const Expr& x) {
-  const GiNaC::symbol s("s"), c("c");
-  const GiNaC::exmap to_symbols{{GiNaC::sin(x), s}, {GiNaC::cos(x), c}};
-  const GiNaC::exmap back{{s, GiNaC::sin(x)}, {c, GiNaC::cos(x)}};
-  const Expr fraction = GiNaC::numer_denom(e.subs(to_symbols));
-  const Expr numerator = fraction.op(0).expand(), denominator = fraction.op(1).expand();
-  Expr best = e;
-  for (const auto& [v, w] : {std::pair{s, c}, std::pair{c, s}}) {
-    const Expr candidate =
-        (reduce_modulo_unit_circle(numerator, v, w) / reduce_modulo_unit_circle(denominator, v, w))
-            .subs(back)
-            .expand();
-    if (expression_size(candidate) < expression_size(best)) best = candidate;
-  }
-  return best;
-}
-
 }  // namespace
 
 std::size_t expression_size(const Expr& e) {
@@ -58,27 +39,51 @@ std::size_t expression_size(const Expr& e) {
 }
 
 Expr simplify(const Expr& e) {
-  Expr result = e.expand();
+  Expr best = e.expand();
   // A rational function is brought to one fraction only when that is smaller.
-  const Expr normal = GiNaC::normal(result);
-  if (expression_size(normal) < expression_size(result)) result = normal.expand();
-  // Until nothing shrinks: reducing in one angle can expose a reduction in another.
-  for (bool shrinking = true; shrinking;) {
-    shrinking = false;
-    for (const auto& x : trig_arguments(result)) {
-      const Expr reduced = reduce_pythagorean(result, x);
-      if (expression_size(reduced) < expression_size(result)) {
-        result = reduced;
-        shrinking = true;
-      }
+  if (const Expr normal = GiNaC::normal(best); expression_size(normal) < expression_size(best)) {
+    best = normal;
+  }
+  // sin²x + cos²x = 1: with s = sin x, c = cos x for each argument, numerator and denominator are
+  // polynomials in the s and c; reduced modulo s² + c² − 1 in s or in c they take a unique form,
+  // so an expression that is zero becomes 0 whatever order GiNaC keeps its terms in. Each argument
+  // is reduced both ways (every combination for up to four arguments) and the smallest kept.
+  const std::vector<Expr> arguments = trig_arguments(best);
+  if (arguments.empty()) return best;
+  std::vector<GiNaC::symbol> s, c;
+  GiNaC::exmap to_symbols, back;
+  for (const Expr& x : arguments) {
+    s.emplace_back();
+    c.emplace_back();
+    to_symbols[GiNaC::sin(x)] = s.back();
+    to_symbols[GiNaC::cos(x)] = c.back();
+    back[s.back()] = GiNaC::sin(x);
+    back[c.back()] = GiNaC::cos(x);
+  }
+  const Expr fraction = GiNaC::numer_denom(GiNaC::normal(best.subs(to_symbols)));
+  const Expr numerator = fraction.op(0).expand(), denominator = fraction.op(1).expand();
+  const std::size_t n = arguments.size();
+  const std::size_t combinations = n <= 4 ? (std::size_t{1} << n) : 2;
+  for (std::size_t mask = 0; mask < combinations; ++mask) {
+    Expr num = numerator, den = denominator;
+    for (std::size_t i = 0; i < n; ++i) {
+      const bool in_sine = n <= 4 ? ((mask >> i) & 1) != 0 : mask == 1;
+      const GiNaC::symbol& v = in_sine ? s[i] : c[i];
+      const GiNaC::symbol& w = in_sine ? c[i] : s[i];
+      num = reduce_modulo_unit_circle(num, v, w);
+      den = reduce_modulo_unit_circle(den, v, w);
+    }
+    const Expr reduced = GiNaC::normal(num / den).subs(back);
+    for (const Expr& candidate : {reduced, reduced.expand()}) {
+      if (expression_size(candidate) < expression_size(best)) best = candidate;
     }
   }
-  return result;
+  return best;
 }
 
 Expr collect_in(const Expr& e, const std::vector<Expr>& symbols) {
   GiNaC::lst list;
-  for (const auto& s : symbols) list.append(s);
+  for (const auto& x : symbols) list.append(x);
   return GiNaC::collect(simplify(e), list);
 }
 

@@ -15,18 +15,6 @@
 
 namespace unidyn {
 
-// A rows × cols array of expressions, row-major.
-struct ExprMatrix {
-  std::size_t rows = 0;
-  std::size_t cols = 0;
-  std::vector<Expr> data;
-
-  ExprMatrix() = default;
-  ExprMatrix(std::size_t r, std::size_t c) : rows(r), cols(c), data(r * c, Expr(0)) {}
-  Expr& operator()(std::size_t i, std::size_t j) { return data[i * cols + j]; }
-  const Expr& operator()(std::size_t i, std::size_t j) const { return data[i * cols + j]; }
-};
-
 struct EquationsOfMotion {
   // M q̈ = f + Aᵀ λ
   ExprMatrix mass_matrix;

@@ -10,7 +10,8 @@
 namespace unidyn {
 
 // Names of a System: parameters, coordinates and der(q), t, and particle members
-// (P.position, P.velocity, P.acceleration, P.mass), and each constraint's multiplier c.lambda.
+// (P.position, P.velocity, P.acceleration, P.mass, P.momentum, P.angular_momentum about O,
+// P.areal_velocity), and each constraint's multiplier c.lambda.
 // Extra names (such as the stretch `s` inside a spring's energy) can be added on top.
 class SystemScope : public Scope {
  public:

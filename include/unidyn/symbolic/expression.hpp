@@ -9,6 +9,7 @@
 #include <array>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace unidyn {
 
@@ -22,6 +23,18 @@ struct VectorExpr {
 
   const Expr& operator[](int i) const { return c[static_cast<std::size_t>(i)]; }
   Expr& operator[](int i) { return c[static_cast<std::size_t>(i)]; }
+};
+
+// A rows × cols array of expressions, row-major.
+struct ExprMatrix {
+  std::size_t rows = 0;
+  std::size_t cols = 0;
+  std::vector<Expr> data;
+
+  ExprMatrix() = default;
+  ExprMatrix(std::size_t r, std::size_t c) : rows(r), cols(c), data(r * c, Expr(0)) {}
+  Expr& operator()(std::size_t i, std::size_t j) { return data[i * cols + j]; }
+  const Expr& operator()(std::size_t i, std::size_t j) const { return data[i * cols + j]; }
 };
 
 VectorExpr operator+(const VectorExpr& a, const VectorExpr& b);
