@@ -13,6 +13,7 @@
 #include "unidyn/equations/equivalence.hpp"
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/equations/newton.hpp"
+#include "unidyn/equations/reduction.hpp"
 #include "unidyn/integrate/simulation.hpp"
 #include "unidyn/io/csv.hpp"
 #include "unidyn/io/equation_report.hpp"
@@ -70,6 +71,16 @@ std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::st
   return overrides;
 }
 
+// The model named on the command line; with --reduced, its approach-II form (the notes on what
+// was eliminated go to standard error).
+System command_model(const ModelCommands& c) {
+  System system = load_model(resolve_model(c.model));
+  if (!c.reduced) return system;
+  Reduction reduction = eliminate_constraints(system);
+  for (const auto& note : reduction.notes) fmt::print(stderr, "approach II: {}\n", note);
+  return std::move(reduction.system);
+}
+
 EquationFormat parse_format(const std::string& format) {
   if (format == "text") return EquationFormat::text;
   if (format == "latex") return EquationFormat::latex;
@@ -78,7 +89,7 @@ EquationFormat parse_format(const std::string& format) {
 }
 
 int run_derive(const ModelCommands& c) {
-  const System system = load_model(resolve_model(c.model));
+  const System system = command_model(c);
   const EquationFormat format = parse_format(c.format);
   if (c.method == "lagrange") {
     write_lagrange(std::cout, system, lagrange_equations(system), format);
@@ -91,7 +102,7 @@ int run_derive(const ModelCommands& c) {
 }
 
 int run_check(const ModelCommands& c) {
-  const System system = load_model(resolve_model(c.model));
+  const System system = command_model(c);
   const EquationsOfMotion lagrange = lagrange_equations(system);
   const NewtonEquations newton = newton_equations(system);
   const EquivalenceReport report = check_equivalence(system, lagrange, newton);
@@ -146,7 +157,7 @@ SimulationOptions options_for(const System& system, const ModelCommands& c) {
 }
 
 int run_simulate(const ModelCommands& c) {
-  const System system = load_model(resolve_model(c.model));
+  const System system = command_model(c);
   const SimulationStart start = initial_state(system, parse_sets(c.sets));
   const SimulationOptions options = options_for(system, c);
   const auto clock_start = std::chrono::steady_clock::now();
@@ -235,6 +246,8 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.derive->add_option("model", c.model, "MODEL file or bundled model name")->required();
   c.derive->add_option("--method", c.method, "lagrange | newton-euler")->capture_default_str();
   c.derive->add_option("--format", c.format, "text | latex | json")->capture_default_str();
+  c.derive->add_flag("--reduced", c.reduced,
+                     "approach II: eliminate the constraints that can be solved for a coordinate");
 
   c.simulate = app.add_subcommand("simulate", "Simulate a model: CSV rows and a run summary");
   c.simulate->add_option("model", c.model, "MODEL file or bundled model name")->required();
@@ -247,10 +260,12 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.simulate->add_option("--rtol", c.rtol, "relative tolerance (dopri5)")
       ->check(CLI::PositiveNumber);
   c.simulate->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
+  c.simulate->add_flag("--reduced", c.reduced, "simulate the approach-II equations");
 
   c.check = app.add_subcommand("check", "Newton vs Lagrange agreement, constraint consistency");
   c.check->add_option("model", c.model, "MODEL file or bundled model name")->required();
   c.check->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
+  c.check->add_flag("--reduced", c.reduced, "check the approach-II equations");
 
   c.models = app.add_subcommand("models", "List the bundled book systems, or print one");
   c.models->add_option("name", c.model_name, "a bundled model");

@@ -21,6 +21,7 @@ struct ModelCommands {
   double t_end = 0, output_step = 0, rtol = 0;
   std::string integrator;
   std::string model_name;
+  bool reduced = false;
 };
 
 void add_model_commands(CLI::App& app, ModelCommands& commands);

@@ -97,7 +97,9 @@ void write_lagrange(std::ostream& out, const System& system, const EquationsOfMo
     return;
   }
 
-  out << system.name << ": Lagrange's equations (approach I), M q'' = f + A^T lambda\n";
+  out << system.name << ": Lagrange's equations"
+      << (constraints.empty() ? "" : ", M q'' = f + A^T lambda (one multiplier per constraint)")
+      << "\n";
   out << "  T = " << render(simplify(eq.kinetic_energy), format) << "\n";
   out << "  U = " << render(simplify(eq.potential_energy), format) << "\n";
   for (std::size_t i = 0; i < q.size(); ++i) {

@@ -42,6 +42,12 @@ std::size_t Configuration::add(const std::string& name) {
   return coordinates_.size() - 1;
 }
 
+Configuration Configuration::without(std::size_t k) const {
+  Configuration reduced = *this;
+  reduced.coordinates_.erase(reduced.coordinates_.begin() + static_cast<std::ptrdiff_t>(k));
+  return reduced;
+}
+
 Expr Configuration::total_derivative(const Expr& f) const {
   // (1.8) ḟ = ∂f/∂t + Σ ∂f/∂q q̇ + Σ ∂f/∂q̇ q̈
   Expr result = f.diff(time_);

@@ -30,6 +30,20 @@ Expr reduce_modulo_unit_circle(const Expr& p, const GiNaC::symbol& v, const GiNa
   return result;
 }
 
+// Simplifies what sits inside: function arguments and the bases of non-integer powers (so that
+// √(r² cos²θ + r² sin²θ) becomes √(r²)).
+struct SimplifyInside : GiNaC::map_function {
+  Expr operator()(const Expr& e) override {
+    if (GiNaC::is_a<GiNaC::power>(e) && !e.op(1).info(GiNaC::info_flags::integer)) {
+      return GiNaC::pow(simplify(e.op(0)), e.op(1));
+    }
+    if (GiNaC::is_a<GiNaC::function>(e)) {
+      return e.map([](const Expr& argument) { return simplify(argument); });
+    }
+    return e.map(*this);
+  }
+};
+
 }  // namespace
 
 std::size_t expression_size(const Expr& e) {
@@ -39,7 +53,8 @@ std::size_t expression_size(const Expr& e) {
 }
 
 Expr simplify(const Expr& e) {
-  Expr best = e.expand();
+  SimplifyInside inside;
+  Expr best = inside(e).expand();
   // A rational function is brought to one fraction only when that is smaller.
   if (const Expr normal = GiNaC::normal(best); expression_size(normal) < expression_size(best)) {
     best = normal;

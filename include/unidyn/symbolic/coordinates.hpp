@@ -26,6 +26,8 @@ class Configuration {
 
   // Adds a coordinate; returns its index.
   std::size_t add(const std::string& name);
+  // The same configuration without coordinate k: same symbols, same time.
+  Configuration without(std::size_t k) const;
 
   const std::vector<CoordinateSymbols>& coordinates() const { return coordinates_; }
   std::size_t size() const { return coordinates_.size(); }

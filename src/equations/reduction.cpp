@@ -1,0 +1,82 @@
+// Approach II: elimination of the integrable constraints that can be solved for a coordinate.
+#include "unidyn/equations/reduction.hpp"
+
+#include <optional>
+
+namespace unidyn {
+namespace {
+
+// The coordinate Ψ can be solved for: Ψ linear in q^k with a coefficient free of every coordinate
+// and rate. nullopt when there is none.
+std::optional<std::size_t> solvable_coordinate(const System& system, const Expr& psi) {
+  const auto& q = system.coordinates();
+  for (std::size_t k = 0; k < q.size(); ++k) {
+    const Expr a = psi.diff(q[k].value);
+    if (a.is_zero()) continue;
+    bool free = true;
+    for (const auto& c : q) free = free && !a.has(c.value) && !a.has(c.rate);
+    if (free) return k;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+Reduction eliminate_constraints(const System& full) {
+  Reduction result{full, {}};
+  System& system = result.system;
+  for (bool eliminated = true; eliminated;) {
+    eliminated = false;
+    for (std::size_t c = 0; c < system.constraints.size(); ++c) {
+      const Constraint& constraint = system.constraints[c];
+      if (constraint.kind != Constraint::Kind::position) continue;
+      const auto k = solvable_coordinate(system, constraint.expression);
+      if (!k) continue;
+      // q^k = q^k − Ψ / (∂Ψ/∂q^k), and its rate by the total derivative
+      const CoordinateSymbols coordinate = system.coordinates()[*k];
+      const Expr solution = GiNaC::normal(
+          coordinate.value - constraint.expression / constraint.expression.diff(coordinate.value));
+      GiNaC::exmap map{{coordinate.value, solution}};
+      map[coordinate.rate] = system.configuration.total_derivative(solution);
+      result.notes.push_back("eliminated " + coordinate.name + " by constraint " + constraint.name);
+
+      // The reduced model: every expression substituted, the coordinate and constraint removed.
+      System reduced = system;
+      reduced.configuration = system.configuration.without(*k);
+      for (auto& p : reduced.particles) p.position = subs(p.position, map);
+      for (auto& f : reduced.forces) {
+        f.potential = f.potential.subs(map);
+        for (auto& pf : f.forces) pf.force = subs(pf.force, map);
+      }
+      reduced.constraints.erase(reduced.constraints.begin() + static_cast<std::ptrdiff_t>(c));
+      for (auto& other : reduced.constraints) other.expression = other.expression.subs(map);
+      reduced.initial_values.erase(reduced.initial_values.begin() +
+                                   static_cast<std::ptrdiff_t>(*k));
+      reduced.initial_rates.erase(reduced.initial_rates.begin() + static_cast<std::ptrdiff_t>(*k));
+      for (auto* outputs : {&reduced.outputs, &reduced.conserved}) {
+        std::vector<Output> kept;
+        for (auto& o : *outputs) {
+          if (o.expression.has(constraint.multiplier)) {
+            result.notes.push_back("dropped output " + o.name + ": it needs " + constraint.name +
+                                   ".lambda, which approach II does not give");
+            continue;
+          }
+          kept.push_back({o.name, o.expression.subs(map), o.where});
+        }
+        *outputs = kept;
+      }
+      system = reduced;
+      eliminated = true;
+      break;
+    }
+  }
+  for (const auto& c : system.constraints) {
+    result.notes.push_back("kept constraint " + c.name +
+                           (c.kind == Constraint::Kind::position
+                                ? ": it is not linear in a coordinate with a constant coefficient"
+                                : ": a velocity constraint"));
+  }
+  return result;
+}
+
+}  // namespace unidyn
