@@ -32,12 +32,14 @@ Reduction eliminate_constraints(const System& full) {
       if (constraint.kind != Constraint::Kind::position) continue;
       const auto k = solvable_coordinate(system, constraint.expression);
       if (!k) continue;
-      // q^k = q^k − Ψ / (∂Ψ/∂q^k), and its rate by the total derivative
+      // q^k = q^k − Ψ / (∂Ψ/∂q^k), its rate and acceleration by the total derivative
       const CoordinateSymbols coordinate = system.coordinates()[*k];
       const Expr solution = GiNaC::normal(
           coordinate.value - constraint.expression / constraint.expression.diff(coordinate.value));
       GiNaC::exmap map{{coordinate.value, solution}};
-      map[coordinate.rate] = system.configuration.total_derivative(solution);
+      const Expr rate = system.configuration.total_derivative(solution);
+      map[coordinate.rate] = rate;
+      map[coordinate.acceleration] = system.configuration.total_derivative(rate);
       result.notes.push_back("eliminated " + coordinate.name + " by constraint " + constraint.name);
 
       // The reduced model: every expression substituted, the coordinate and constraint removed.

@@ -13,12 +13,58 @@
 #include <sstream>
 #include <string_view>
 
+#include "unidyn/kinematics/constraint_gradient.hpp"
 #include "unidyn/model/forces.hpp"
 #include "unidyn/model/scope.hpp"
 #include "unidyn/symbolic/expression_parser.hpp"
 
 namespace unidyn {
 namespace {
+
+// Outputs may also name constraint forces: P.constraint_force = m a − F (the resultant on a
+// particle, §4.4), and c.force.P = λ ∂Ψ/∂r_P (the force of one constraint on a particle).
+class OutputScope : public SystemScope {
+ public:
+  explicit OutputScope(const System& system) : SystemScope(system), system_(system) {}
+
+  std::optional<Value> lookup(std::string_view name) const override {
+    if (auto value = SystemScope::lookup(name)) return value;
+    const std::string key(name);
+    const std::size_t dot = key.find('.');
+    if (dot == std::string::npos) return std::nullopt;
+    const std::string owner = key.substr(0, dot), member = key.substr(dot + 1);
+    if (const auto p = system_.find_particle(owner); p && member == "constraint_force") {
+      VectorExpr R = system_.particles[*p].mass * system_.acceleration(*p);
+      for (const auto& element : system_.forces) {
+        for (const auto& [particle, F] : element.forces) {
+          if (particle == *p) R = R - F;
+        }
+      }
+      return Value::of(R);
+    }
+    for (std::size_t k = 0; k < system_.constraints.size(); ++k) {
+      const Constraint& c = system_.constraints[k];
+      if (c.name != owner || !member.starts_with("force.")) continue;
+      const auto p = system_.find_particle(member.substr(6));
+      if (!p) return std::nullopt;
+      const auto gradient = constraint_gradient(system_, constraint_row(system_, k));
+      return Value::of(Expr(c.multiplier) * gradient[*p]);
+    }
+    return std::nullopt;
+  }
+
+  std::vector<std::string> names() const override {
+    std::vector<std::string> all = SystemScope::names();
+    for (const auto& p : system_.particles) all.push_back(p.name + ".constraint_force");
+    for (const auto& c : system_.constraints) {
+      for (const auto& p : system_.particles) all.push_back(c.name + ".force." + p.name);
+    }
+    return all;
+  }
+
+ private:
+  const System& system_;
+};
 
 class ModelReader {
  public:
@@ -300,7 +346,7 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
       fail(entry, "each force is one of: gravity, spring, damper, force, potential, gravitation");
     }
     const std::string kind = entry.begin()->first.Scalar();
-    const YAML::Node& spec = entry.begin()->second;
+    const YAML::Node spec = entry.begin()->second;  // a copy: the iterator is a temporary
     SystemScope scope(system);
     // The two ends of a spring or a damper: not one point, where its direction would be 0/0.
     const auto ends = [&]() -> std::pair<ForcePoint, ForcePoint> {
@@ -540,7 +586,7 @@ std::vector<Output> ModelReader::read_outputs(const YAML::Node& node, const Syst
                                               const std::string& what) {
   expect_map(node, what);
   expect_unique_keys(node);
-  const SystemScope scope(system);
+  const OutputScope scope(system);
   std::vector<Output> outputs;
   for (const auto& item : node) {
     const std::string name = scalar(item.first, "a name");
