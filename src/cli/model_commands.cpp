@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -63,8 +64,9 @@ std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::st
     double value = 0;
     const char* begin = s.data() + (eq == std::string::npos ? 0 : eq + 1);
     const auto [ptr, ec] = std::from_chars(begin, s.data() + s.size(), value);
-    if (eq == std::string::npos || ec != std::errc() || ptr != s.data() + s.size()) {
-      throw std::invalid_argument("--set " + s + ": expected NAME=NUMBER");
+    if (eq == std::string::npos || ec != std::errc() || ptr != s.data() + s.size() ||
+        !std::isfinite(value)) {
+      throw std::invalid_argument("--set " + s + ": expected NAME=NUMBER (a finite number)");
     }
     overrides.emplace_back(s.substr(0, eq), value);
   }
@@ -149,6 +151,10 @@ SimulationOptions options_for(const System& system, const ModelCommands& c) {
   if (c.rtol > 0) {
     o.rtol = c.rtol;
     o.atol = std::min(system.simulate.atol, o.rtol * 1e-2);
+  }
+  // a run asked for more rows than anyone can use would fill the disk
+  if ((o.t_end / o.output_step) > 1e8) {
+    throw std::invalid_argument("--t-end / --output-step asks for more than 10^8 rows");
   }
   if (o.method != "dopri5" && o.method != "rk4") {
     throw std::invalid_argument("--method must be dopri5 or rk4");
@@ -239,6 +245,17 @@ int run_models(const ModelCommands& c) {
                               "' (see `unidyn models`)");
 }
 
+// A positive, finite number (0 means "the model's value" in ModelCommands, so 0 or less given on
+// the command line must be refused rather than ignored).
+const CLI::Validator kPositive(
+    [](std::string& text) -> std::string {
+      double x = 0;
+      const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), x);
+      const bool ok = ec == std::errc() && ptr == text.data() + text.size() && std::isfinite(x);
+      return ok && x > 0 ? "" : "expected a positive number, got '" + text + "'";
+    },
+    "POSITIVE");
+
 }  // namespace
 
 void add_model_commands(CLI::App& app, ModelCommands& c) {
@@ -252,13 +269,10 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.simulate = app.add_subcommand("simulate", "Simulate a model: CSV rows and a run summary");
   c.simulate->add_option("model", c.model, "MODEL file or bundled model name")->required();
   c.simulate->add_option("-o,--output", c.output, "CSV file (default: standard output)");
-  // (0 means "the model's", so a 0 or a negative value given here must be refused, not ignored)
-  c.simulate->add_option("--t-end", c.t_end, "end time")->check(CLI::PositiveNumber);
-  c.simulate->add_option("--output-step", c.output_step, "time between rows")
-      ->check(CLI::PositiveNumber);
+  c.simulate->add_option("--t-end", c.t_end, "end time")->check(kPositive);
+  c.simulate->add_option("--output-step", c.output_step, "time between rows")->check(kPositive);
   c.simulate->add_option("--method", c.integrator, "dopri5 | rk4");
-  c.simulate->add_option("--rtol", c.rtol, "relative tolerance (dopri5)")
-      ->check(CLI::PositiveNumber);
+  c.simulate->add_option("--rtol", c.rtol, "relative tolerance (dopri5)")->check(kPositive);
   c.simulate->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
   c.simulate->add_flag("--reduced", c.reduced, "simulate the approach-II equations");
 

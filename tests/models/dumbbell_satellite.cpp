@@ -14,12 +14,7 @@
 namespace unidyn {
 namespace {
 
-// Keeps a measured error in the test report (--gtest_output=xml).
-void record(const std::string& name, double value) {
-  std::ostringstream text;
-  text << std::scientific << std::setprecision(3) << value;
-  ::testing::Test::RecordProperty(name, text.str());
-}
+using test::record;
 
 // The model's defaults.
 constexpr double G = 1.0, M = 1.0, m1 = 0.001, m2 = 0.002, K = 0.5, L0 = 0.01;

@@ -16,13 +16,7 @@ namespace unidyn {
 namespace {
 
 using test::kPi;
-
-// Keeps a measured error in the test report (--gtest_output=xml).
-void record(const std::string& name, double value) {
-  std::ostringstream text;
-  text << std::scientific << std::setprecision(3) << value;
-  ::testing::Test::RecordProperty(name, text.str());
-}
+using test::record;
 
 // The orbit's elements from the model's initial state, computed here from the book's formulas
 // (the particle starts at θ = 0 with ṙ = 0, which is the pericentre when w0 r0 exceeds the circular

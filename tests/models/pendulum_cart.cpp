@@ -16,13 +16,7 @@ namespace unidyn {
 namespace {
 
 using test::kPi;
-
-// Keeps a measured error in the test report (--gtest_output=xml).
-void record(const std::string& name, double value) {
-  std::ostringstream text;
-  text << std::scientific << std::setprecision(3) << value;
-  ::testing::Test::RecordProperty(name, text.str());
-}
+using test::record;
 
 struct Parameters {
   double m1, m2, g, K, L0;

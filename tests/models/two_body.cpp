@@ -15,13 +15,7 @@ namespace unidyn {
 namespace {
 
 using test::kPi;
-
-// Keeps a measured error in the test report (--gtest_output=xml).
-void record(const std::string& name, double value) {
-  std::ostringstream text;
-  text << std::scientific << std::setprecision(3) << value;
-  ::testing::Test::RecordProperty(name, text.str());
-}
+using test::record;
 
 // The default parameters of two-body.yaml.
 constexpr double G = 1.0, m1 = 1.0, m2 = 0.5, m = m1 + m2, reduced_mass = m1 * m2 / m;

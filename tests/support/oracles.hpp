@@ -5,8 +5,11 @@
 
 #include <cmath>
 #include <functional>
+#include <iomanip>
 #include <numbers>
 #include <random>
+#include <sstream>
+#include <string>
 
 #include "unidyn/tensor/tensor.hpp"
 
@@ -59,6 +62,13 @@ inline Tensor derivative(const std::function<Tensor(double)>& f, double t, doubl
 // Fourth-order central difference of a scalar function of time.
 inline double derivative(const std::function<double(double)>& f, double t, double h = 1e-3) {
   return (8.0 * (f(t + h) - f(t - h)) - (f(t + 2 * h) - f(t - 2 * h))) / (12.0 * h);
+}
+
+// Keeps a measured error in the test report (--gtest_output=xml).
+inline void record(const std::string& name, double value) {
+  std::ostringstream text;
+  text << std::scientific << std::setprecision(3) << value;
+  ::testing::Test::RecordProperty(name, text.str());
 }
 
 // Largest absolute entry of the difference.
