@@ -12,13 +12,22 @@ EquationsOfMotion lagrange_equations(const System& system) {
   eq.kinetic_energy = system.kinetic_energy();
   eq.potential_energy = system.potential_energy();
 
-  // Φ_i = Σ F · ∂r/∂q^i over the non-conservative elements
+  // Φ_i = Σ F · ∂r/∂q^i + Σ M · ∂ω/∂q̇^i over the non-conservative elements (10.x)
   eq.generalized_force.assign(n, 0);
+  std::vector<VectorExpr> omega;
+  for (std::size_t b = 0; b < system.bodies.size(); ++b)
+    omega.push_back(system.angular_velocity(b));
   for (const auto& element : system.forces) {
     if (element.conservative) continue;
-    for (const auto& [p, F] : element.forces) {
-      for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
+      for (const auto& [p, F] : element.forces) {
         eq.generalized_force[i] += dot(F, diff(system.particles[p].position, q[i].value));
+      }
+      for (const auto& f : element.body_forces) {
+        eq.generalized_force[i] += dot(f.force, diff(f.point, q[i].value));
+      }
+      for (const auto& moment : element.moments) {
+        eq.generalized_force[i] += dot(moment.moment, diff(omega[moment.body], q[i].rate));
       }
     }
   }

@@ -212,7 +212,8 @@ class ModelReader {
     for (char c : name) valid = valid && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
     if (!valid) fail(node, what + " '" + name + "' is not a valid name (letters, digits, _)");
     if (reserved.count(name)) fail(node, what + " '" + name + "' is a reserved word");
-    if (system.find_parameter(name) || system.find_coordinate(name) || system.find_particle(name)) {
+    if (system.find_parameter(name) || system.find_coordinate(name) || system.find_particle(name) ||
+        system.find_body(name)) {
       fail(node, "'" + name + "' is already defined");
     }
     return name;
@@ -221,6 +222,9 @@ class ModelReader {
   void read_parameters(const YAML::Node& node, System& system);
   void read_coordinates(const YAML::Node& node, System& system);
   void read_particles(const YAML::Node& node, System& system);
+  void read_bodies(const YAML::Node& node, System& system);
+  TensorExpr rotation(const YAML::Node& node, const System& system);
+  GiNaC::matrix inertia(const YAML::Node& node, const System& system);
   void read_forces(const YAML::Node& node, System& system);
   ForcePoint force_point(const YAML::Node& node, const System& system, const Scope& scope);
   void read_constraints(const YAML::Node& node, System& system);
@@ -292,10 +296,11 @@ System ModelReader::read(const YAML::Node& root) {
   if (!root.IsDefined() || root.IsNull())
     throw ModelError({file_, 1, 1}, "the model file is empty");
   expect_map(root, "a model file");
-  expect_keys(root,
-              {"unidyn", "name", "description", "reference", "parameters", "coordinates",
-               "particles", "forces", "constraints", "initial", "simulate", "outputs", "conserved"},
-              "the model");
+  expect_keys(
+      root,
+      {"unidyn", "name", "description", "reference", "parameters", "coordinates", "particles",
+       "bodies", "forces", "constraints", "initial", "simulate", "outputs", "conserved"},
+      "the model");
   if (!root["unidyn"]) throw ModelError(at(root), "missing 'unidyn: 1' (the model format version)");
   if (scalar(root["unidyn"], "unidyn") != "1")
     fail(root["unidyn"], "unsupported format version: expected 'unidyn: 1'");
@@ -307,7 +312,10 @@ System ModelReader::read(const YAML::Node& root) {
   if (!root["coordinates"]) throw ModelError(at(root), "missing 'coordinates:' (a list of names)");
   read_coordinates(root["coordinates"], system);
   if (root["particles"]) read_particles(root["particles"], system);
-  if (system.particles.empty()) throw ModelError(at(root), "the model has no particles");
+  if (root["bodies"]) read_bodies(root["bodies"], system);
+  if (system.particles.empty() && system.bodies.empty()) {
+    throw ModelError(at(root), "the model has no particles and no bodies");
+  }
   if (root["forces"]) read_forces(root["forces"], system);
   if (root["constraints"]) read_constraints(root["constraints"], system);
   system.initial_values.assign(system.coordinates().size(), 0);
@@ -355,6 +363,110 @@ void ModelReader::read_particles(const YAML::Node& node, System& system) {
   }
 }
 
+void ModelReader::read_bodies(const YAML::Node& node, System& system) {
+  expect_map(node, "bodies");
+  for (const auto& item : node) {
+    const std::string name = new_name(item.first, system, "body");
+    const YAML::Node& spec = item.second;
+    expect_map(spec, "body '" + name + "'");
+    expect_keys(spec, {"mass", "inertia", "rotation", "center"}, "body '" + name + "'");
+    if (!spec["mass"] || !spec["inertia"] || !spec["rotation"] || !spec["center"]) {
+      fail(spec, "body '" + name + "' needs mass:, inertia:, rotation: and center:");
+    }
+    const SystemScope scope(system);
+    const Expr mass = scalar_expr(spec["mass"], scope, "mass");
+    expect_state_only(spec["mass"], mass, system, "a mass");
+    Body body{name,
+              mass,
+              inertia(spec["inertia"], system),
+              rotation(spec["rotation"], system),
+              VectorExpr{},
+              at(item.first)};
+    // the centre may use the body's own basis (l*top.e3): the body is known before it is read
+    system.bodies.push_back(body);
+    const SystemScope with_body(system);
+    const VectorExpr center = vector_expr(spec["center"], with_body, "center");
+    expect_state_only(spec["center"], center, system, "a centre of mass");
+    system.bodies.back().center = center;
+  }
+}
+
+// [A, B, C] principal moments along e1, e2, e3, or {tensor: [[..], [..], [..]]} (components on
+// e_i).
+GiNaC::matrix ModelReader::inertia(const YAML::Node& node, const System& system) {
+  const SystemScope scope(system);
+  GiNaC::matrix J(3, 3);
+  if (node.IsSequence()) {
+    if (node.size() != 3) fail(node, "inertia: [A, B, C] takes three principal moments");
+    for (unsigned i = 0; i < 3; ++i) J(i, i) = scalar_expr(node[i], scope, "a moment of inertia");
+  } else if (node.IsMap() && node["tensor"] && node.size() == 1) {
+    const YAML::Node& rows = node["tensor"];
+    if (!rows.IsSequence() || rows.size() != 3) fail(rows, "tensor: takes three rows of three");
+    for (unsigned i = 0; i < 3; ++i) {
+      if (!rows[i].IsSequence() || rows[i].size() != 3) fail(rows[i], "a row of three components");
+      for (unsigned k = 0; k < 3; ++k) J(i, k) = scalar_expr(rows[i][k], scope, "a component");
+    }
+    for (unsigned i = 0; i < 3; ++i) {
+      for (unsigned k = 0; k < i; ++k) {
+        if (!(J(i, k) - J(k, i)).expand().is_zero()) fail(rows, "an inertia tensor is symmetric");
+      }
+    }
+  } else {
+    fail(node, "inertia must be [A, B, C] or {tensor: [[..], [..], [..]]}");
+  }
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned k = 0; k < 3; ++k) expect_state_only(node, J(i, k), system, "an inertia");
+  }
+  return J;
+}
+
+// {euler: I-J-K, angles: [..]}, {axis: [..], angle: ..}, {quaternion: [e0, e1, e2, e3]}, or a list
+// of these, multiplied left to right.
+TensorExpr ModelReader::rotation(const YAML::Node& node, const System& system) {
+  const SystemScope scope(system);
+  if (node.IsSequence()) {
+    if (node.size() == 0) fail(node, "an empty product of rotations");
+    TensorExpr Q = identity_tensor_expr();
+    for (const auto& factor : node) Q = Q.mul(rotation(factor, system));
+    return Q;
+  }
+  expect_map(node, "a rotation");
+  TensorExpr Q;
+  if (node["euler"]) {
+    expect_keys(node, {"euler", "angles"}, "an Euler-angle rotation");
+    const auto set = EulerSet::parse(scalar(node["euler"], "euler"));
+    if (!set) fail(node["euler"], "expected an Euler-angle set I-J-K such as 3-1-3 or 3-2-1");
+    const YAML::Node& angles = node["angles"];
+    if (!angles || !angles.IsSequence() || angles.size() != 3) {
+      fail(node, "an Euler-angle rotation needs angles: [a, b, c]");
+    }
+    Q = euler_rotation_expr(*set, scalar_expr(angles[0], scope, "an angle"),
+                            scalar_expr(angles[1], scope, "an angle"),
+                            scalar_expr(angles[2], scope, "an angle"));
+  } else if (node["axis"]) {
+    expect_keys(node, {"axis", "angle"}, "an axis-angle rotation");
+    if (!node["angle"]) fail(node, "an axis-angle rotation needs angle:");
+    const VectorExpr axis = vector_expr(node["axis"], scope, "axis");
+    Q = axis_angle_rotation_expr(axis / norm(axis), scalar_expr(node["angle"], scope, "angle"));
+  } else if (node["quaternion"]) {
+    expect_keys(node, {"quaternion"}, "a quaternion rotation");
+    const YAML::Node& e = node["quaternion"];
+    if (!e.IsSequence() || e.size() != 4) fail(e, "quaternion: takes [e0, e1, e2, e3]");
+    Q = euler_parameter_rotation_expr(
+        scalar_expr(e[0], scope, "e0"),
+        {scalar_expr(e[1], scope, "e1"), scalar_expr(e[2], scope, "e2"),
+         scalar_expr(e[3], scope, "e3")});
+  } else {
+    fail(node,
+         "a rotation is {euler: I-J-K, angles: [..]}, {axis: [..], angle: ..}, "
+         "{quaternion: [e0, e1, e2, e3]} or a list of these");
+  }
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned k = 0; k < 3; ++k) expect_state_only(node, Q(i, k), system, "a rotation");
+  }
+  return Q;
+}
+
 ForcePoint ModelReader::force_point(const YAML::Node& node, const System& system,
                                     const Scope& scope) {
   if (node.IsScalar()) {
@@ -371,7 +483,8 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
   if (!node.IsSequence()) fail(node, "forces must be a list, e.g. [{gravity: -g*E3}]");
   for (const auto& entry : node) {
     if (!entry.IsMap() || entry.size() != 1) {
-      fail(entry, "each force is one of: gravity, spring, damper, force, potential, gravitation");
+      fail(entry,
+           "each force is one of: gravity, spring, damper, force, moment, potential, gravitation");
     }
     const std::string kind = entry.begin()->first.Scalar();
     const YAML::Node spec = entry.begin()->second;  // a copy: the iterator is a temporary
@@ -430,13 +543,34 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
         element = damper(system, from, to, c);
       } else if (kind == "force") {
         expect_map(spec, "force");
-        expect_keys(spec, {"at", "value"}, "force");
-        if (!spec["at"] || !spec["value"]) fail(spec, "a force needs at: (a particle) and value:");
-        const auto p = system.find_particle(scalar(spec["at"], "at"));
-        if (!p) fail(spec["at"], "at: must name a particle");
+        expect_keys(spec, {"at", "on", "point", "value"}, "force");
+        if (!spec["value"] || !!spec["at"] == !!spec["on"]) {
+          fail(spec,
+               "a force needs value: and either at: (a particle) or on: (a body, with point: "
+               "[X1, X2, X3] on its basis from its centre)");
+        }
         const VectorExpr F = vector_expr(spec["value"], scope, "value");
         expect_state_only(spec["value"], F, system, "a force", true);
-        element = applied_force(*p, F);
+        if (spec["at"]) {
+          const auto p = system.find_particle(scalar(spec["at"], "at"));
+          if (!p) fail(spec["at"], "at: must name a particle");
+          element = applied_force(*p, F);
+        } else {
+          const auto b = system.find_body(scalar(spec["on"], "on"));
+          if (!b) fail(spec["on"], "on: must name a body");
+          const VectorExpr X =
+              spec["point"] ? vector_expr(spec["point"], scope, "point") : VectorExpr{};
+          element = body_force(*b, system.material_point(*b, X), F);
+        }
+      } else if (kind == "moment") {
+        expect_map(spec, "moment");
+        expect_keys(spec, {"on", "value"}, "moment");
+        if (!spec["on"] || !spec["value"]) fail(spec, "a moment needs on: (a body) and value:");
+        const auto b = system.find_body(scalar(spec["on"], "on"));
+        if (!b) fail(spec["on"], "on: must name a body");
+        const VectorExpr M = vector_expr(spec["value"], scope, "value");
+        expect_state_only(spec["value"], M, system, "a moment", true);
+        element = body_moment(*b, M);
       } else if (kind == "potential") {
         const Expr U = scalar_expr(spec, scope, "potential");
         expect_state_only(spec, U, system, "a potential U(q, t)");

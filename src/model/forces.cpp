@@ -12,20 +12,34 @@ void push_force(ForceElement& element, const ForcePoint& point, const VectorExpr
 
 }  // namespace
 
+ForceElement new_element(ForceElement::Kind kind, const std::string& label, bool conservative) {
+  ForceElement element;
+  element.kind = kind;
+  element.label = label;
+  element.conservative = conservative;
+  return element;
+}
+
 ForceElement uniform_gravity(const System& system, const VectorExpr& g) {
-  ForceElement element{ForceElement::Kind::gravity, "gravity", {}, 0, {}, true};
+  ForceElement element = new_element(ForceElement::Kind::gravity, "gravity", true);
   for (std::size_t p = 0; p < system.particles.size(); ++p) {
     const Particle& particle = system.particles[p];
     // (2.5) U = −m g · r, F = −∂U/∂r = m g
     element.potential -= particle.mass * dot(g, particle.position);
     element.forces.push_back({p, particle.mass * g});
   }
+  for (std::size_t b = 0; b < system.bodies.size(); ++b) {
+    // (8.x) on a body: the resultant m g at the centre of mass, U = −m g · x̄
+    const Body& body = system.bodies[b];
+    element.potential -= body.mass * dot(g, body.center);
+    element.body_forces.push_back({b, body.center, body.mass * g});
+  }
   return element;
 }
 
 ForceElement spring(const ForcePoint& from, const ForcePoint& to, const Expr& rest_length,
                     const GiNaC::symbol& stretch, const Expr& energy) {
-  ForceElement element{ForceElement::Kind::spring, "spring", {}, 0, {}, true};
+  ForceElement element = new_element(ForceElement::Kind::spring, "spring", true);
   const VectorExpr d = to.position - from.position;
   const Expr length = norm(d);
   const Expr s = length - rest_length;
@@ -40,7 +54,7 @@ ForceElement spring(const ForcePoint& from, const ForcePoint& to, const Expr& re
 
 ForceElement damper(const System& system, const ForcePoint& from, const ForcePoint& to,
                     const Expr& coefficient) {
-  ForceElement element{ForceElement::Kind::damper, "damper", {}, 0, {}, false};
+  ForceElement element = new_element(ForceElement::Kind::damper, "damper", false);
   const VectorExpr d = to.position - from.position;
   const VectorExpr e = d / norm(d);
   const VectorExpr relative_velocity = system.configuration.total_derivative(d);
@@ -51,18 +65,20 @@ ForceElement damper(const System& system, const ForcePoint& from, const ForcePoi
 }
 
 ForceElement applied_force(std::size_t particle, const VectorExpr& force) {
-  ForceElement element{ForceElement::Kind::force, "force", {}, 0, {}, false};
+  ForceElement element = new_element(ForceElement::Kind::force, "force", false);
   element.forces.push_back({particle, force});
   return element;
 }
 
 ForceElement coordinate_potential(const Expr& U) {
-  return {ForceElement::Kind::potential, "potential", {}, U, {}, true};
+  ForceElement element = new_element(ForceElement::Kind::potential, "potential", true);
+  element.potential = U;
+  return element;
 }
 
 ForceElement gravitation(const System& system, std::size_t first, std::size_t second,
                          const Expr& G) {
-  ForceElement element{ForceElement::Kind::gravitation, "gravitation", {}, 0, {}, true};
+  ForceElement element = new_element(ForceElement::Kind::gravitation, "gravitation", true);
   const Particle& p1 = system.particles[first];
   const Particle& p2 = system.particles[second];
   const VectorExpr d = p2.position - p1.position;
@@ -72,6 +88,22 @@ ForceElement gravitation(const System& system, std::size_t first, std::size_t se
   const VectorExpr F2 = (-G * p1.mass * p2.mass / GiNaC::pow(distance, 3)) * d;
   element.forces.push_back({second, F2});
   element.forces.push_back({first, -F2});
+  return element;
+}
+
+}  // namespace unidyn
+
+namespace unidyn {
+
+ForceElement body_force(std::size_t body, const VectorExpr& point, const VectorExpr& force) {
+  ForceElement element = new_element(ForceElement::Kind::force, "force", false);
+  element.body_forces.push_back({body, point, force});
+  return element;
+}
+
+ForceElement body_moment(std::size_t body, const VectorExpr& moment) {
+  ForceElement element = new_element(ForceElement::Kind::moment, "moment", false);
+  element.moments.push_back({body, moment});
   return element;
 }
 

@@ -20,6 +20,7 @@ std::optional<Value> SystemScope::lookup(std::string_view name) const {
   for (const auto& c : system_.constraints) {
     if (c.name == owner && member == "lambda") return Value::of(c.multiplier);
   }
+  if (const auto b = system_.find_body(owner)) return body_member(*b, member);
   const auto p = system_.find_particle(owner);
   if (!p) return std::nullopt;
   if (member == "position") return Value::of(system_.particles[*p].position);
@@ -35,6 +36,35 @@ std::optional<Value> SystemScope::lookup(std::string_view name) const {
   return std::nullopt;
 }
 
+std::optional<Value> SystemScope::body_member(std::size_t b, const std::string& member) const {
+  const Body& body = system_.bodies[b];
+  if (member == "e1" || member == "e2" || member == "e3") {
+    return Value::of(system_.body_basis_vector(b, member[1] - '0'));
+  }
+  if (member == "center") return Value::of(body.center);
+  if (member == "velocity") return Value::of(system_.center_velocity(b));
+  if (member == "omega") return Value::of(system_.angular_velocity(b));
+  if (member == "H") return Value::of(system_.angular_momentum(b));
+  if (member == "mass") return Value::of(body.mass);
+  // H_O = x̄ × m v̄ + H about the fixed origin
+  if (member == "angular_momentum") {
+    return Value::of(cross(body.center, body.mass * system_.center_velocity(b)) +
+                     system_.angular_momentum(b));
+  }
+  return std::nullopt;
+}
+
+std::optional<Value> SystemScope::call(std::string_view name,
+                                       const std::vector<Value>& args) const {
+  // body.point([X1, X2, X3]): the material point x̄ + Q X
+  const std::string key(name);
+  const std::size_t dot = key.find('.');
+  if (dot == std::string::npos || key.substr(dot + 1) != "point") return std::nullopt;
+  const auto b = system_.find_body(key.substr(0, dot));
+  if (!b || args.size() != 1 || !args[0].is_vector()) return std::nullopt;
+  return Value::of(system_.material_point(*b, args[0].vector));
+}
+
 std::optional<Expr> SystemScope::rate(std::string_view name) const {
   if (const auto q = system_.find_coordinate(std::string(name))) {
     return Expr(system_.coordinates()[*q].rate);
@@ -48,6 +78,12 @@ std::vector<std::string> SystemScope::names() const {
   for (const auto& p : system_.parameters) all.push_back(p.name);
   for (const auto& q : system_.coordinates()) all.push_back(q.name);
   for (const auto& c : system_.constraints) all.push_back(c.name + ".lambda");
+  for (const auto& b : system_.bodies) {
+    for (const char* member : {".e1", ".e2", ".e3", ".center", ".velocity", ".omega", ".H", ".mass",
+                               ".angular_momentum"}) {
+      all.push_back(b.name + member);
+    }
+  }
   for (const auto& p : system_.particles) {
     for (const char* member : {".position", ".velocity", ".acceleration", ".mass", ".momentum",
                                ".angular_momentum", ".areal_velocity"}) {

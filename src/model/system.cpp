@@ -26,6 +26,41 @@ std::optional<std::size_t> System::find_particle(const std::string& wanted) cons
   return find_by_name(particles, wanted);
 }
 
+std::optional<std::size_t> System::find_body(const std::string& wanted) const {
+  return find_by_name(bodies, wanted);
+}
+
+VectorExpr System::angular_velocity(std::size_t b) const {
+  const TensorExpr& Q = bodies[b].rotation;
+  TensorExpr Q_rate(3, 3);
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned k = 0; k < 3; ++k) Q_rate(i, k) = configuration.total_derivative(Q(i, k));
+  }
+  // ω = axial(Q̇ Qᵀ)
+  return simplified(axial_expr(Q_rate.mul(Q.transpose())));
+}
+
+VectorExpr System::body_angular_velocity(std::size_t b) const {
+  return simplified(times(bodies[b].rotation.transpose(), angular_velocity(b)));
+}
+
+VectorExpr System::body_basis_vector(std::size_t b, int k) const {
+  return column(bodies[b].rotation, k - 1);
+}
+
+VectorExpr System::center_velocity(std::size_t b) const {
+  return configuration.total_derivative(bodies[b].center);
+}
+
+VectorExpr System::angular_momentum(std::size_t b) const {
+  // H = J ω = Q J0 ω0
+  return times(bodies[b].rotation, times(bodies[b].inertia, body_angular_velocity(b)));
+}
+
+VectorExpr System::material_point(std::size_t b, const VectorExpr& X) const {
+  return bodies[b].center + times(bodies[b].rotation, X);
+}
+
 VectorExpr System::velocity(std::size_t p) const {
   return configuration.total_derivative(particles[p].position);
 }
@@ -45,6 +80,12 @@ Expr System::kinetic_energy() const {
   for (std::size_t p = 0; p < particles.size(); ++p) {
     const VectorExpr v = velocity(p);
     T += particles[p].mass * dot(v, v) / 2;
+  }
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    // Koenig: ½ m v̄ · v̄ + ½ ω0 · J0 ω0
+    const VectorExpr v = center_velocity(b);
+    const VectorExpr w0 = body_angular_velocity(b);
+    T += bodies[b].mass * dot(v, v) / 2 + dot(w0, times(bodies[b].inertia, w0)) / 2;
   }
   return T;
 }

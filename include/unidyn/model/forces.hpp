@@ -14,7 +14,11 @@ struct ForcePoint {
   VectorExpr position;
 };
 
-// Uniform gravity g (a vector, e.g. −g E3) on every particle: U = −Σ m g · r, F = m g.
+// An empty element of a kind.
+ForceElement new_element(ForceElement::Kind kind, const std::string& label, bool conservative);
+
+// Uniform gravity g (a vector, e.g. −g E3) on every particle and body: U = −Σ m g · r (r = x̄ for a
+// body), F = m g (at the centre of mass of a body).
 ForceElement uniform_gravity(const System& system, const VectorExpr& g);
 
 // (2.5) A spring between two points with energy U(s) of its stretch s = ‖r_to − r_from‖ − L0
@@ -28,6 +32,12 @@ ForceElement damper(const System& system, const ForcePoint& from, const ForcePoi
 
 // A force F(q, q̇, t) on a particle.
 ForceElement applied_force(std::size_t particle, const VectorExpr& force);
+
+// A force F(q, q̇, t) on a body at the point x (its centre, or a material point).
+ForceElement body_force(std::size_t body, const VectorExpr& point, const VectorExpr& force);
+
+// A pure moment M(q, q̇, t) on a body (e.g. a non-conservative moment, Ziegler's follower torque).
+ForceElement body_moment(std::size_t body, const VectorExpr& moment);
 
 // A potential energy U(q, t) given directly in the coordinates.
 ForceElement coordinate_potential(const Expr& U);

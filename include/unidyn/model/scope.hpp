@@ -21,9 +21,13 @@ class SystemScope : public Scope {
 
   std::optional<Value> lookup(std::string_view name) const override;
   std::optional<Expr> rate(std::string_view name) const override;
+  std::optional<Value> call(std::string_view name, const std::vector<Value>& args) const override;
   std::vector<std::string> names() const override;
 
  private:
+  // e1..e3, center, velocity, omega, H (about the centre), mass, angular_momentum (about O)
+  std::optional<Value> body_member(std::size_t b, const std::string& member) const;
+
   const System& system_;
   std::map<std::string, Value, std::less<>> extra_;
 };

@@ -9,6 +9,7 @@
 
 #include "unidyn/symbolic/coordinates.hpp"
 #include "unidyn/symbolic/expression.hpp"
+#include "unidyn/symbolic/rotation_expr.hpp"
 
 namespace unidyn {
 
@@ -28,23 +29,47 @@ struct Particle {
   SourcePosition where;
 };
 
+// A rigid body (Ch. 7): mass, inertia tensor about its centre of mass with components J0_ik on the
+// body basis e_i = Q E_i (so J = Q J0 Qᵀ), rotation Q(q, t), centre of mass x̄(q, t).
+struct Body {
+  std::string name;
+  Expr mass;
+  GiNaC::matrix inertia;   // J0, components on e1, e2, e3
+  GiNaC::matrix rotation;  // Q, components Q_ik = E_i · Q E_k
+  VectorExpr center;
+  SourcePosition where;
+};
+
 // A force F acting on a particle (the vector Newton's law sees).
 struct ParticleForce {
   std::size_t particle;
   VectorExpr force;
 };
 
+// A force F on a body at the point x (x = x̄ for its centre), or a pure moment M on a body.
+struct BodyForce {
+  std::size_t body;
+  VectorExpr point;
+  VectorExpr force;
+};
+struct BodyMoment {
+  std::size_t body;
+  VectorExpr moment;
+};
+
 // One entry of `forces:`. A conservative element has a potential U whose forces on the particles
 // are −∂U/∂r (listed in `forces` for Newton's form); a non-conservative element has only forces.
 // A bare `potential:` in the coordinates has no force vectors: both forms see it through −∂U/∂q.
 struct ForceElement {
-  enum class Kind { gravity, spring, damper, force, potential, gravitation };
+  enum class Kind { gravity, spring, damper, force, potential, gravitation, moment };
   Kind kind;
   std::string label;
   SourcePosition where;
   Expr potential = 0;
   std::vector<ParticleForce> forces;
   bool conservative = false;
+  std::vector<BodyForce> body_forces;
+  std::vector<BodyMoment> moments;
 };
 
 // Coulomb friction on a constraint's contact (issue 5 simulates it).
@@ -89,6 +114,7 @@ struct System {
   Configuration configuration;
   std::vector<Parameter> parameters;
   std::vector<Particle> particles;
+  std::vector<Body> bodies;
   std::vector<ForceElement> forces;
   std::vector<Constraint> constraints;
   // Initial q and der(q) per coordinate, expressions in the parameters (0 when absent).
@@ -104,14 +130,24 @@ struct System {
   std::optional<std::size_t> find_parameter(const std::string& name) const;
   std::optional<std::size_t> find_coordinate(const std::string& name) const;
   std::optional<std::size_t> find_particle(const std::string& name) const;
+  std::optional<std::size_t> find_body(const std::string& name) const;
 
   // v = dr/dt of particle p (1.7).
   VectorExpr velocity(std::size_t p) const;
   // a = dv/dt of particle p.
   VectorExpr acceleration(std::size_t p) const;
+  // Body b: ω = axial(Q̇ Qᵀ) (§6.4), simplified; its body components ω0 = Qᵀ ω; the body basis
+  // vector e_k = Q E_k; the velocity of its centre; H = J ω about the centre (7.x), J = Q J0 Qᵀ.
+  VectorExpr angular_velocity(std::size_t b) const;
+  VectorExpr body_angular_velocity(std::size_t b) const;
+  VectorExpr body_basis_vector(std::size_t b, int k) const;
+  VectorExpr center_velocity(std::size_t b) const;
+  VectorExpr angular_momentum(std::size_t b) const;
+  // The material point X = X_k e_k from the centre: x̄ + Q X.
+  VectorExpr material_point(std::size_t b, const VectorExpr& X) const;
   // Total potential energy U of the conservative elements.
   Expr potential_energy() const;
-  // T = ½ Σ m v · v.
+  // T = ½ Σ m v · v over the particles + Koenig's ½ m v̄ · v̄ + ½ ω · J ω over the bodies (7.x).
   Expr kinetic_energy() const;
   // The parameters' values as a substitution (for numeric checks).
   GiNaC::exmap parameter_values() const;

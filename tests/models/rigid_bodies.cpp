@@ -1,0 +1,115 @@
+// Rigid bodies (Ch. 7–9): the torque-free body of Figs. 9.2–9.4, the heavy top and the compound
+// pendulum against Euler's equations, the top's classical equations and closed forms.
+#include <array>
+
+#include "support/model_run.hpp"
+#include "support/oracles.hpp"
+
+namespace unidyn {
+namespace {
+
+// Euler's equations (9.11) for a torque-free body, λ1 ω̇1 = (λ2 − λ3) ω2 ω3 and cyclic, by RK4.
+std::array<double, 3> euler_equations(std::array<double, 3> w, double l1, double l2, double l3,
+                                      double t_end, int steps) {
+  const auto f = [&](const std::array<double, 3>& x) {
+    return std::array<double, 3>{(l2 - l3) * x[1] * x[2] / l1, (l3 - l1) * x[2] * x[0] / l2,
+                                 (l1 - l2) * x[0] * x[1] / l3};
+  };
+  const double h = t_end / steps;
+  for (int s = 0; s < steps; ++s) {
+    const auto k1 = f(w);
+    std::array<double, 3> y;
+    for (int i = 0; i < 3; ++i) y[i] = w[i] + h / 2 * k1[i];
+    const auto k2 = f(y);
+    for (int i = 0; i < 3; ++i) y[i] = w[i] + h / 2 * k2[i];
+    const auto k3 = f(y);
+    for (int i = 0; i < 3; ++i) y[i] = w[i] + h * k3[i];
+    const auto k4 = f(y);
+    for (int i = 0; i < 3; ++i) w[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+  }
+  return w;
+}
+
+// §9.5 case (i): λ = (2, 4, 5), ω(0) = 0.5 E2 + 5 E3. The body components of ω follow Euler's
+// equations; at t = 10 they are (0.2800, 0.3638, 5.0063) (notes §4.2); T = 63, |H|² = 629
+TEST(RigidBodies, TorqueFreeBodyFollowsEulersEquations) {
+  const test::ModelRun run = test::run_model("torque-free-body");
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const std::size_t last = run.rows.size() - 1;
+  ASSERT_DOUBLE_EQ(run.at(last, "t"), 10.0);
+  const auto w = euler_equations({0.0, 0.5, 5.0}, 2, 4, 5, 10.0, 20000);
+  EXPECT_NEAR(run.at(last, "w1"), w[0], 1e-8);
+  EXPECT_NEAR(run.at(last, "w2"), w[1], 1e-8);
+  EXPECT_NEAR(run.at(last, "w3"), w[2], 1e-8);
+  EXPECT_NEAR(run.at(last, "w1"), 0.2800, 5e-5);
+  EXPECT_NEAR(run.at(last, "w2"), 0.3638, 5e-5);
+  EXPECT_NEAR(run.at(last, "w3"), 5.0063, 5e-5);
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    EXPECT_NEAR(run.at(i, "energy"), 63.0, 1e-10);
+    const Vec3 H(run.at(i, "Hx"), run.at(i, "Hy"), run.at(i, "Hz"));
+    EXPECT_NEAR(H.squaredNorm(), 629.0, 1e-9);
+  }
+}
+
+// §9.7: the heavy top keeps E, H_O·E3 and H_O·e3 = C ω3, and θ(t) follows the classical
+// one-degree-of-freedom equation A′θ̈ = A′ψ̇² sinθ cosθ − C ω3 ψ̇ sinθ + m g l sinθ with
+// ψ̇ = (p_ψ − C ω3 cosθ)/(A′ sin²θ), A′ = A + m l², integrated here by RK4
+TEST(RigidBodies, HeavyTopIntegralsAndNutation) {
+  const test::ModelRun run =
+      test::run_model("heavy-top", {}, [](SimulationOptions& o) { o.t_end = 2; });
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const double m = 1, g = 9.81, l = 0.05, A = 0.004, C = 0.002, A1 = A + m * l * l;
+  const double theta0 = 0.3, w3 = 60.0;  // ω3 = φ̇ + ψ̇ cos θ at the start (ψ̇ = 0)
+  const double p_psi = C * w3 * std::cos(theta0);
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    EXPECT_NEAR(run.at(i, "H_Oe3"), C * w3, 1e-12);
+    EXPECT_NEAR(run.at(i, "H_O3"), p_psi, 1e-12);
+    EXPECT_NEAR(run.at(i, "energy"), run.at(0, "energy"), 1e-10 * run.at(0, "energy"));
+  }
+  // θ'' from the reduced equation, by RK4 to t = 2
+  const auto theta_rate = [&](double th, double dth) {
+    const double dpsi = (p_psi - C * w3 * std::cos(th)) / (A1 * std::sin(th) * std::sin(th));
+    return std::array<double, 2>{dth, (A1 * dpsi * dpsi * std::sin(th) * std::cos(th) -
+                                       C * w3 * dpsi * std::sin(th) + m * g * l * std::sin(th)) /
+                                          A1};
+  };
+  double th = theta0, dth = 0;
+  const int steps = 200000;
+  const double h = 2.0 / steps;
+  for (int s = 0; s < steps; ++s) {
+    const auto k1 = theta_rate(th, dth);
+    const auto k2 = theta_rate(th + h / 2 * k1[0], dth + h / 2 * k1[1]);
+    const auto k3 = theta_rate(th + h / 2 * k2[0], dth + h / 2 * k2[1]);
+    const auto k4 = theta_rate(th + h * k3[0], dth + h * k3[1]);
+    th += h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0]);
+    dth += h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]);
+  }
+  const std::size_t last = run.rows.size() - 1;
+  EXPECT_NEAR(run.at(last, "theta"), th, 1e-8);
+  EXPECT_NEAR(run.at(last, "der(theta)"), dth, 1e-6);
+}
+
+// A body swinging about a fixed axis: small oscillations have period 2π √((C + m d²)/(m g d))
+TEST(RigidBodies, CompoundPendulumPeriod) {
+  const test::ModelRun run = test::run_model("compound-pendulum", {{"theta", 1e-4}});
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const double m = 2, g = 9.81, d = 0.3, C = 0.025;
+  const double period = 2 * test::kPi * std::sqrt((C + m * d * d) / (m * g * d));
+  // upward zero crossings of θ, interpolated linearly between rows
+  std::vector<double> crossings;
+  for (std::size_t i = 1; i < run.rows.size(); ++i) {
+    const double a = run.at(i - 1, "theta"), b = run.at(i, "theta");
+    if (a < 0 && b >= 0) {
+      const double t0 = run.at(i - 1, "t"), t1 = run.at(i, "t");
+      crossings.push_back(t0 + (t1 - t0) * (-a) / (b - a));
+    }
+  }
+  ASSERT_GE(crossings.size(), 3u);
+  const double measured = (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+  // linear interpolation of a sine over a step of 0.01 s: error ≈ h²/period² ≈ 1e-4 relative at
+  // most
+  EXPECT_NEAR(measured, period, 2e-5 * period);
+}
+
+}  // namespace
+}  // namespace unidyn
