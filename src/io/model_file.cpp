@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "unidyn/kinematics/constraint_gradient.hpp"
+#include "unidyn/kinematics/inertia.hpp"
 #include "unidyn/model/forces.hpp"
 #include "unidyn/model/scope.hpp"
 #include "unidyn/symbolic/expression_parser.hpp"
@@ -236,6 +237,7 @@ class ModelReader {
   std::string file_;
   std::string_view source_;
   std::set<std::string> columns_;  // names of the CSV columns taken so far
+  Expr shape_mass_;                // the mass of the body whose inertia is being read
 };
 
 // YAML puts tags, anchors, quotes or a block header before a scalar's value, and folds and
@@ -411,8 +413,25 @@ GiNaC::matrix ModelReader::inertia(const YAML::Node& node, const System& system)
         if (!(J(i, k) - J(k, i)).expand().is_zero()) fail(rows, "an inertia tensor is symmetric");
       }
     }
+  } else if (node.IsMap() && node.size() == 1 &&
+             !shape_dimensions(node.begin()->first.Scalar()).empty()) {
+    // a uniform shape: {cylinder: {radius: R, height: h}}; its mass is filled in by read_bodies
+    const std::string shape = node.begin()->first.Scalar();
+    const YAML::Node dims = node.begin()->second;
+    const auto names = shape_dimensions(shape);
+    expect_map(dims, shape);
+    expect_keys(dims, std::set<std::string>(names.begin(), names.end()), shape);
+    std::vector<Expr> values;
+    for (const auto& n : names) {
+      if (!dims[n]) fail(dims, shape + " needs " + n + ":");
+      values.push_back(scalar_expr(dims[n], scope, n));
+    }
+    const auto moments = shape_principal_moments(shape, shape_mass_, values);
+    for (unsigned i = 0; i < 3; ++i) J(i, i) = moments[i];
   } else {
-    fail(node, "inertia must be [A, B, C] or {tensor: [[..], [..], [..]]}");
+    fail(node,
+         "inertia must be [A, B, C], {tensor: [[..], [..], [..]]} or a shape: sphere, "
+         "hollow_sphere, cylinder, hollow_cylinder, disk, rod, box, ellipsoid, cone");
   }
   for (unsigned i = 0; i < 3; ++i) {
     for (unsigned k = 0; k < 3; ++k) expect_state_only(node, J(i, k), system, "an inertia");

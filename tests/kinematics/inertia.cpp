@@ -1,0 +1,134 @@
+#include "unidyn/kinematics/inertia.hpp"
+
+#include <functional>
+
+#include "support/oracles.hpp"
+
+namespace unidyn {
+namespace {
+
+double value(const Expr& e) {
+  return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e)).to_double();
+}
+
+// Principal moments of a uniform solid by the midpoint rule in cylindrical coordinates (r, θ, z):
+// the shape is r ≤ radius(z) for z in [z0, z1]; returns (A, C) about the centre of mass.
+std::pair<double, double> axisymmetric_moments(double mass, double z0, double z1,
+                                               const std::function<double(double)>& radius) {
+  const int nz = 2000, nr = 400;
+  double volume = 0, z_moment = 0, C = 0, Izz_axis = 0, r2 = 0;
+  for (int i = 0; i < nz; ++i) {
+    const double z = z0 + (i + 0.5) * (z1 - z0) / nz, dz = (z1 - z0) / nz;
+    const double R = radius(z);
+    for (int j = 0; j < nr; ++j) {
+      const double r = (j + 0.5) * R / nr, dV = 2 * test::kPi * r * (R / nr) * dz;
+      volume += dV;
+      z_moment += z * dV;
+      C += r * r * dV;
+      r2 += r * r * dV;
+      Izz_axis += z * z * dV;
+    }
+  }
+  const double zc = z_moment / volume;
+  // A = ∫ (y² + (z − zc)²) dm with ∫ y² = ½ ∫ r²
+  const double A = (0.5 * r2 + Izz_axis - 2 * zc * z_moment + zc * zc * volume) * mass / volume;
+  return {A, C * mass / volume};
+}
+
+// Each shape's formula against the midpoint rule (error O(h²) ≈ 1e-5 relative here)
+TEST(Inertia, AxisymmetricShapesAgainstQuadrature) {
+  const double m = 3.0, R = 0.7, h = 1.9;
+  const Expr M = m, r = GiNaC::numeric(7, 10), H = GiNaC::numeric(19, 10);
+  struct Case {
+    std::string shape;
+    std::vector<Expr> dimensions;
+    double z0, z1;
+    std::function<double(double)> radius;
+  };
+  const std::vector<Case> cases = {
+      {"cylinder", {r, H}, 0, h, [&](double) { return R; }},
+      {"cone", {r, H}, 0, h, [&](double z) { return R * (1 - z / h); }},
+      {"sphere", {r}, -R, R, [&](double z) { return std::sqrt(std::max(R * R - z * z, 0.0)); }},
+  };
+  for (const auto& c : cases) {
+    const auto moments = shape_principal_moments(c.shape, M, c.dimensions);
+    const auto [A, C] = axisymmetric_moments(m, c.z0, c.z1, c.radius);
+    EXPECT_NEAR(value(moments[0]), A, 1e-4 * A) << c.shape;
+    EXPECT_NEAR(value(moments[1]), A, 1e-4 * A) << c.shape;
+    EXPECT_NEAR(value(moments[2]), C, 1e-4 * C) << c.shape;
+  }
+}
+
+// Box and ellipsoid: the box's Euler tensor is m/12 diag(a², b², c²) (§A.6 example), so
+// J = tr(E) I − E (7.19); the ellipsoid's is m/5 diag(a², b², c²)
+TEST(Inertia, BoxAndEllipsoidFromEulerTensor) {
+  const double m = 2.0, a = 0.3, b = 0.5, c = 1.1;
+  const Expr M = m, A = GiNaC::numeric(3, 10), B = GiNaC::numeric(1, 2),
+             Cc = GiNaC::numeric(11, 10);
+  for (const auto& [shape, factor] : {std::pair{std::string("box"), 12.0}, {"ellipsoid", 5.0}}) {
+    const auto moments = shape_principal_moments(shape, M, {A, B, Cc});
+    const Tensor E = Tensor(Vec3(m * a * a, m * b * b, m * c * c).asDiagonal()) / factor;
+    const Tensor J = inertia_from_euler_tensor(E);
+    for (int i = 0; i < 3; ++i)
+      EXPECT_NEAR(value(moments[static_cast<std::size_t>(i)]), J(i, i), 1e-15);
+  }
+}
+
+// Thin shapes: disk = cylinder of no height, rod = cylinder of no radius; shells by differences of
+// solids of radii R and R(1 + ε)
+TEST(Inertia, ThinShapesAsLimits) {
+  const Expr M = 1, R = 2, L = 3;
+  const auto disk = shape_principal_moments("disk", M, {R});
+  const auto flat = shape_principal_moments("cylinder", M, {R, 0});
+  const auto rod = shape_principal_moments("rod", M, {L});
+  const auto thin = shape_principal_moments("cylinder", M, {0, L});
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_TRUE((disk[i] - flat[i]).is_zero());
+    EXPECT_TRUE((rod[i] - thin[i]).is_zero());
+  }
+  // a thin spherical shell: d/dR (m R²·2/5 for mass ∝ R³) per unit mass
+  const double Rs = 2.0, eps = 1e-6;
+  const double outer = 0.4 * Rs * Rs * std::pow(1 + eps, 5), inner = 0.4 * Rs * Rs;
+  const double shell = (outer - inner) / (std::pow(1 + eps, 3) - 1);
+  EXPECT_NEAR(value(shape_principal_moments("hollow_sphere", M, {R})[0]), shell, 1e-5);
+  EXPECT_THROW(shape_principal_moments("torus", M, {R}), std::invalid_argument);
+  EXPECT_THROW(shape_principal_moments("box", M, {R}), std::invalid_argument);
+}
+
+// Parallel axes: a rod about its end, m L²/3
+TEST(Inertia, ParallelAxis) {
+  const double m = 2.0, L = 1.5;
+  const Tensor J = Vec3(m * L * L / 12, m * L * L / 12, 0).asDiagonal();
+  const Tensor end = parallel_axis(J, m, Vec3(0, 0, L / 2));
+  EXPECT_NEAR(end(0, 0), m * L * L / 3, 1e-15);
+  EXPECT_NEAR(end(2, 2), 0.0, 1e-15);
+  test::Random random;
+  for (int k = 0; k < 100; ++k) {
+    const Vec3 d = random.vector(2.0);
+    const Tensor Jd = parallel_axis(Tensor::Identity(), 1.5, d);
+    // J_P d = J d (no change along d), and the change is m ‖d‖² across it
+    EXPECT_LT((Jd * d - d).norm(), 1e-13);
+  }
+}
+
+// (7.18′) realisable: the triangle inequalities and non-negative moments; E ↔ J round trip
+TEST(Inertia, Realisability) {
+  EXPECT_TRUE(is_realisable_inertia(Vec3(2, 4, 5).asDiagonal()));
+  EXPECT_TRUE(is_realisable_inertia(Vec3(1, 1, 2).asDiagonal()));   // a thin disk: A + B = C
+  EXPECT_FALSE(is_realisable_inertia(Vec3(1, 1, 3).asDiagonal()));  // A + B < C
+  EXPECT_FALSE(is_realisable_inertia(Vec3(-1, 2, 2).asDiagonal()));
+  Tensor skew = Vec3(2, 4, 5).asDiagonal();
+  skew(0, 1) = 0.5;
+  EXPECT_FALSE(is_realisable_inertia(skew));
+  test::Random random;
+  for (int k = 0; k < 100; ++k) {
+    const Tensor Q = random.rotation();
+    const Tensor J = Q * Vec3(2, 4, 5).asDiagonal() * Q.transpose();
+    EXPECT_TRUE(is_realisable_inertia(J));
+    EXPECT_LT((inertia_from_euler_tensor(euler_tensor_from_inertia(J)) - J).cwiseAbs().maxCoeff(),
+              1e-13);
+  }
+}
+
+}  // namespace
+}  // namespace unidyn
