@@ -208,6 +208,14 @@ int run_simulate(const ModelCommands& c) {
                  s.initial_projection);
     }
   }
+  for (const Body& body : system.bodies) {
+    if (body.chart) {
+      fmt::print(out,
+                 "  Euler angles: closest to gimbal lock |[g1,g2,g3]| = {:.3g} at t = {:.6g}\n",
+                 s.closest_gimbal_lock, s.closest_gimbal_lock_time);
+      break;
+    }
+  }
   for (const auto& d : s.conserved_drift) {
     fmt::print(out, "  conserved {}: initial {:.12g}, max change {:.3g}", d.name, d.initial,
                d.max_change);

@@ -9,6 +9,7 @@
 #include "unidyn/integrate/dormand_prince.hpp"
 #include "unidyn/integrate/driver.hpp"
 #include "unidyn/integrate/rk4.hpp"
+#include "unidyn/rotation/euler_angles.hpp"
 
 namespace unidyn {
 namespace {
@@ -72,7 +73,9 @@ class Projector {
     Eigen::VectorXd qddot, lambda;
     compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data_);  // fills the mass matrix
     const Eigen::LLT<Eigen::MatrixXd> llt(data_.mass_matrix);
-    const Eigen::MatrixXd MinvAt = llt.solve(A.transpose());
+    // a semi-definite M (redundant coordinates) has no kinetic-energy norm: the Euclidean one then
+    const Eigen::MatrixXd MinvAt =
+        llt.info() == Eigen::Success ? Eigen::MatrixXd(llt.solve(A.transpose())) : A.transpose();
     return MinvAt * (A * MinvAt).ldlt().solve(r);
   }
 
@@ -81,6 +84,31 @@ class Projector {
   CompiledSystemData data_;
   std::vector<Eigen::Index> position_rows_;
 };
+
+// (§6.8) The Euler-angle charts of the bodies: the closest approach to gimbal lock goes into the
+// summary, and a run that reaches it stops with a message that says what to do instead.
+void watch_euler_charts(const System& system, double t, const Eigen::VectorXd& y,
+                        SimulationSummary& summary) {
+  for (const Body& body : system.bodies) {
+    if (!body.chart) continue;
+    const auto& c = body.chart->coordinates;
+    const Vec3 angles(y[static_cast<Eigen::Index>(c[0])], y[static_cast<Eigen::Index>(c[1])],
+                      y[static_cast<Eigen::Index>(c[2])]);
+    const double volume = std::abs(euler_basis_volume(body.chart->set, angles));
+    if (volume < summary.closest_gimbal_lock) {
+      summary.closest_gimbal_lock = volume;
+      summary.closest_gimbal_lock_time = t;
+    }
+    if (volume <= kGimbalLockStop) {
+      throw std::runtime_error(
+          "the " + body.chart->set.name() + " Euler angles of body '" + body.name +
+          "' reached gimbal lock (|[g1, g2, g3]| = " + std::to_string(volume) + ", second angle " +
+          std::to_string(angles[1]) +
+          " rad): describe its rotation with a quaternion, or with an Euler set whose singular "
+          "angle this motion avoids");
+    }
+  }
+}
 
 std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunction rhs) {
   if (options.method == "rk4") {
@@ -236,13 +264,14 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     y0 << q, qdot;
     IntegrationCallbacks callbacks;
     callbacks.output = emit;
-    if (options.project && compiled.constraint_count() > 0) {
-      callbacks.post_step = [&](double t, Eigen::VectorXd& y) {
-        Eigen::VectorXd yq = y.head(n), yv = y.tail(n);
-        projector.project(t, yq, yv);
-        y << yq, yv;
-      };
-    }
+    const bool project = options.project && compiled.constraint_count() > 0;
+    callbacks.post_step = [&](double t, Eigen::VectorXd& y) {
+      watch_euler_charts(system, t, y, summary);
+      if (!project) return;
+      Eigen::VectorXd yq = y.head(n), yv = y.tail(n);
+      projector.project(t, yq, yv);
+      y << yq, yv;
+    };
     const IntegrationResult result =
         integrate(*stepper, start.t0, y0, options.t_end, options.output_step, callbacks);
     summary.ok = result.ok;

@@ -225,6 +225,8 @@ class ModelReader {
   void read_particles(const YAML::Node& node, System& system);
   void read_bodies(const YAML::Node& node, System& system);
   TensorExpr rotation(const YAML::Node& node, const System& system);
+  std::optional<EulerChart> euler_chart(const YAML::Node& node, const System& system);
+  void add_unit_norm_constraint(const YAML::Node& node, const std::string& body, System& system);
   GiNaC::matrix inertia(const YAML::Node& node, const System& system);
   void read_forces(const YAML::Node& node, System& system);
   ForcePoint force_point(const YAML::Node& node, const System& system, const Scope& scope);
@@ -383,7 +385,9 @@ void ModelReader::read_bodies(const YAML::Node& node, System& system) {
               inertia(spec["inertia"], system),
               rotation(spec["rotation"], system),
               VectorExpr{},
-              at(item.first)};
+              at(item.first),
+              euler_chart(spec["rotation"], system)};
+    add_unit_norm_constraint(spec["rotation"], name, system);
     // the centre may use the body's own basis (l*top.e3): the body is known before it is read
     system.bodies.push_back(body);
     const SystemScope with_body(system);
@@ -484,6 +488,36 @@ TensorExpr ModelReader::rotation(const YAML::Node& node, const System& system) {
     for (unsigned k = 0; k < 3; ++k) expect_state_only(node, Q(i, k), system, "a rotation");
   }
   return Q;
+}
+
+// The chart of {euler: I-J-K, angles: [a, b, c]} when a, b, c are coordinates.
+std::optional<EulerChart> ModelReader::euler_chart(const YAML::Node& node, const System& system) {
+  if (!node.IsMap() || !node["euler"] || !node["angles"] || !node["angles"].IsSequence()) return {};
+  EulerChart chart{*EulerSet::parse(node["euler"].Scalar()), {}};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto q = system.find_coordinate(node["angles"][i].Scalar());
+    if (!q) return {};
+    chart.coordinates[i] = *q;
+  }
+  return chart;
+}
+
+// {quaternion: [e0, e1, e2, e3]} of four coordinates: unidyn keeps e0² + e · e = 1 itself, as a
+// position constraint named <body>_unit (its multiplier does no work).
+void ModelReader::add_unit_norm_constraint(const YAML::Node& node, const std::string& body,
+                                           System& system) {
+  if (!node.IsMap() || !node["quaternion"]) return;
+  Expr norm_squared = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const auto q = system.find_coordinate(node["quaternion"][i].Scalar());
+    if (!q) return;  // the parameters are expressions: their norm is the model's business
+    norm_squared += GiNaC::pow(system.coordinates()[*q].value, 2);
+  }
+  const std::string name = body + "_unit";
+  system.constraints.push_back(
+      {name, Constraint::Kind::position, norm_squared - 1,
+       GiNaC::realsymbol("lambda(" + name + ")", "\\lambda_{\\mathrm{" + name + "}}"), false,
+       std::nullopt, at(node)});
 }
 
 ForcePoint ModelReader::force_point(const YAML::Node& node, const System& system,

@@ -109,9 +109,14 @@ void CompiledSystem::solve(double t, const Eigen::VectorXd& q, const Eigen::Vect
 
   // M = L Lᵀ: the mass matrix of a well-posed model is positive definite
   const Eigen::LLT<Eigen::MatrixXd> llt(data.mass_matrix);
-  if (llt.info() != Eigen::Success || !data.mass_matrix.allFinite()) {
-    throw std::runtime_error("the mass matrix is singular or not positive definite at t = " +
-                             std::to_string(t) + " (a singular configuration of the coordinates?)");
+  if (!data.mass_matrix.allFinite()) {
+    throw std::runtime_error("the mass matrix is not finite at t = " + std::to_string(t));
+  }
+  if (llt.info() != Eigen::Success) {
+    // M is only semi-definite when coordinates are redundant (the four Euler parameters of a
+    // body); the constraints then make the saddle-point system regular.
+    solve_saddle_point(t, qddot, lambda, data);
+    return;
   }
   qddot = llt.solve(data.forcing);
   lambda.resize(Mc);
@@ -128,6 +133,26 @@ void CompiledSystem::solve(double t, const Eigen::VectorXd& q, const Eigen::Vect
     lambda = ldlt.solve(-data.constraint_bias - data.constraint_matrix * qddot);
     qddot += MinvAt * lambda;
   }
+}
+
+void CompiledSystem::solve_saddle_point(double t, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
+                                        CompiledSystemData& data) const {
+  const auto N = static_cast<Eigen::Index>(n_), Mc = static_cast<Eigen::Index>(m_);
+  // [M  −Aᵀ; A  0] [q̈; λ] = [f; −b]
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(N + Mc, N + Mc);
+  K.topLeftCorner(N, N) = data.mass_matrix;
+  K.topRightCorner(N, Mc) = -data.constraint_matrix.transpose();
+  K.bottomLeftCorner(Mc, N) = data.constraint_matrix;
+  Eigen::VectorXd rhs(N + Mc);
+  rhs << data.forcing, -data.constraint_bias;
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(K);
+  if (m_ == 0 || !lu.isInvertible()) {
+    throw std::runtime_error("the mass matrix is singular or not positive definite at t = " +
+                             std::to_string(t) + " (a singular configuration of the coordinates?)");
+  }
+  const Eigen::VectorXd x = lu.solve(rhs);
+  qddot = x.head(N);
+  lambda = x.tail(Mc);
 }
 
 void CompiledSystem::constraints(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,

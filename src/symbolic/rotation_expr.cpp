@@ -47,9 +47,12 @@ TensorExpr axis_angle_rotation_expr(const VectorExpr& r, const Expr& angle) {
 }
 
 TensorExpr euler_parameter_rotation_expr(const Expr& e0, const VectorExpr& e) {
-  // (6.36) (e0² − e · e) I + 2 e⊗e + 2 e0 skew(e)
+  // (6.36) ((e0² − e · e) I + 2 e⊗e + 2 e0 skew(e)) / (e0² + e · e): divided by the squared norm it
+  // is a rotation for any (e0, e) ≠ 0, so ω = axial(Q̇ Qᵀ) is an angular velocity off the unit
+  // sphere too (and the kinetic energy does not see the norm)
   TensorExpr Q(3, 3);
   const Expr d = e0 * e0 - dot(e, e);
+  const Expr norm_squared = e0 * e0 + dot(e, e);
   for (unsigned i = 0; i < 3; ++i) {
     for (unsigned k = 0; k < 3; ++k) {
       Q(i, k) = 2 * e[static_cast<int>(i)] * e[static_cast<int>(k)] + (i == k ? d : Expr(0));
@@ -61,7 +64,7 @@ TensorExpr euler_parameter_rotation_expr(const Expr& e0, const VectorExpr& e) {
   Q(1, 2) -= 2 * e0 * e[0];
   Q(2, 0) -= 2 * e0 * e[1];
   Q(2, 1) += 2 * e0 * e[0];
-  return Q;
+  return Q.mul_scalar(1 / norm_squared);
 }
 
 VectorExpr times(const TensorExpr& A, const VectorExpr& v) {

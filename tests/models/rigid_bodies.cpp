@@ -68,6 +68,74 @@ TEST(RigidBodies, TorqueFreeBodyThousandPeriods) {
   }
 }
 
+// Upward and downward zero crossings of a column, interpolated linearly between rows.
+std::vector<double> zero_crossings(const test::ModelRun& run, const std::string& column) {
+  std::vector<double> crossings;
+  for (std::size_t i = 1; i < run.rows.size(); ++i) {
+    const double a = run.at(i - 1, column), b = run.at(i, column);
+    if ((a < 0) != (b < 0)) {
+      const double t0 = run.at(i - 1, "t"), t1 = run.at(i, "t");
+      crossings.push_back(t0 + (t1 - t0) * a / (a - b));
+    }
+  }
+  return crossings;
+}
+
+// §9.5 case (ii), ω(0) = 5 E2 + 0.1 E3, with Euler parameters (no singularity): ω2 changes sign at
+// t ≈ 2.229, 6.686, 11.143 (notes §4.2), e2 turns over (e2 · E2 ≈ −1), the unit norm holds, and
+// the body components follow Euler's equations
+TEST(RigidBodies, QuaternionBodyCaseTwo) {
+  const test::ModelRun run = test::run_model("torque-free-quaternion");
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const auto crossings = zero_crossings(run, "w2");
+  ASSERT_GE(crossings.size(), 3u);
+  EXPECT_NEAR(crossings[0], 2.229, 2e-3);
+  EXPECT_NEAR(crossings[1], 6.686, 2e-3);
+  EXPECT_NEAR(crossings[2], 11.143, 2e-3);
+  double lowest = 1;
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    lowest = std::min(lowest, run.at(i, "e2_E2"));
+    const double norm = std::hypot(run.at(i, "e0"), run.at(i, "e1"), run.at(i, "e2"));
+    EXPECT_NEAR(norm * norm + std::pow(run.at(i, "e3"), 2), 1.0, 1e-12);
+    EXPECT_NEAR(run.at(i, "energy"), 50.025, 1e-9);
+  }
+  EXPECT_LT(lowest, -0.99);
+  const auto w = euler_equations({0.0, 5.0, 0.1}, 2, 4, 5, 10.0, 40000);
+  const std::size_t row = 1000;  // t = 10
+  ASSERT_DOUBLE_EQ(run.at(row, "t"), 10.0);
+  EXPECT_NEAR(run.at(row, "w1"), w[0], 1e-7);
+  EXPECT_NEAR(run.at(row, "w2"), w[1], 1e-7);
+  EXPECT_NEAR(run.at(row, "w3"), w[2], 1e-7);
+}
+
+// The same case with 3-2-1 Euler angles passes within 0.009 rad of their singularity (notes §4.2)
+// and still agrees with the Euler parameters; the summary reports the closest approach
+TEST(RigidBodies, EulerAnglesNearGimbalLock) {
+  const test::ModelRun angles =
+      test::run_model("torque-free-body", {{"der(psi)", 0.1}, {"der(theta)", 5.0}},
+                      [](SimulationOptions& o) { o.t_end = 12; });
+  const test::ModelRun quaternion =
+      test::run_model("torque-free-quaternion", {}, [](SimulationOptions& o) { o.t_end = 12; });
+  ASSERT_TRUE(angles.summary.ok) << angles.summary.message;
+  EXPECT_LT(angles.summary.closest_gimbal_lock, 0.01);
+  EXPECT_GT(angles.summary.closest_gimbal_lock, 1e-4);
+  for (std::size_t i = 0; i < angles.rows.size(); ++i) {
+    for (const char* w : {"w1", "w2", "w3"}) {
+      EXPECT_NEAR(angles.at(i, w), quaternion.at(i, w), 1e-7) << "t = " << angles.at(i, "t");
+    }
+  }
+}
+
+// A top started at θ = 1e-7 is at the 3-1-3 singularity: the run stops with a message that says
+// what to do, keeping its first row
+TEST(RigidBodies, GimbalLockStopsTheRun) {
+  const test::ModelRun run = test::run_model("heavy-top", {{"theta", 1e-7}, {"der(psi)", 1.0}});
+  EXPECT_FALSE(run.summary.ok);
+  EXPECT_NE(run.summary.message.find("gimbal lock"), std::string::npos) << run.summary.message;
+  EXPECT_NE(run.summary.message.find("quaternion"), std::string::npos);
+  EXPECT_GE(run.rows.size(), 1u);
+}
+
 // §9.7: the heavy top keeps E, H_O·E3 and H_O·e3 = C ω3, and θ(t) follows the classical
 // one-degree-of-freedom equation A′θ̈ = A′ψ̇² sinθ cosθ − C ω3 ψ̇ sinθ + m g l sinθ with
 // ψ̇ = (p_ψ − C ω3 cosθ)/(A′ sin²θ), A′ = A + m l², integrated here by RK4

@@ -56,8 +56,15 @@ struct SimulationSummary {
     double max_change = 0.0;
   };
   std::vector<Drift> conserved_drift;
+  // bodies described by Euler angles: the smallest |[g1, g2, g3]| met after a step, and when
+  double closest_gimbal_lock = 1.0;
+  double closest_gimbal_lock_time = 0.0;
   StepperStats stats;
 };
+
+// A run whose Euler angles come this close to gimbal lock (|[g1, g2, g3]| = |cos γ²| or |sin γ²|)
+// stops: the equations are too ill-conditioned to go on.
+inline constexpr double kGimbalLockStop = 1e-6;
 
 // The CSV header: t, each q, each der(q), energy (when every force has a potential), one
 // lambda(<constraint>) per constraint, then the model's outputs and conserved quantities.

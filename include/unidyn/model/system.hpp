@@ -2,6 +2,7 @@
 // lives elsewhere (as Pinocchio separates Model from Data).
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -31,6 +32,13 @@ struct Particle {
 
 // A rigid body (Ch. 7): mass, inertia tensor about its centre of mass with components J0_ik on the
 // body basis e_i = Q E_i (so J = Q J0 Qᵀ), rotation Q(q, t), centre of mass x̄(q, t).
+// A body's rotation given by one Euler-angle set whose angles are three coordinates: the chart a
+// simulation watches for gimbal lock (§6.8).
+struct EulerChart {
+  EulerSet set;
+  std::array<std::size_t, 3> coordinates;
+};
+
 struct Body {
   std::string name;
   Expr mass;
@@ -38,6 +46,7 @@ struct Body {
   GiNaC::matrix rotation;  // Q, components Q_ik = E_i · Q E_k
   VectorExpr center;
   SourcePosition where;
+  std::optional<EulerChart> chart;
 };
 
 // A force F acting on a particle (the vector Newton's law sees).

@@ -4,7 +4,8 @@
 //   M(q, t) q̈ = f(q, q̇, t) + Aᵀ λ,     A q̈ + b = 0
 //
 // solved through the Schur complement: with M = L Lᵀ, (A M⁻¹ Aᵀ) λ = −b − A M⁻¹ f, then
-// q̈ = M⁻¹ (f + Aᵀ λ).
+// q̈ = M⁻¹ (f + Aᵀ λ); when M is only semi-definite (redundant coordinates such as Euler
+// parameters), through the whole saddle-point system instead.
 #pragma once
 
 #include <Eigen/Dense>
@@ -63,6 +64,9 @@ class CompiledSystem {
                CompiledSystemData& data) const;
 
  private:
+  // The full (n + m) system when M is only semi-definite.
+  void solve_saddle_point(double t, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
+                          CompiledSystemData& data) const;
   void load_state(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                   std::span<const double> parameters, CompiledSystemData& data) const;
 

@@ -17,7 +17,7 @@ TensorExpr euler_rotation_expr(const EulerSet& set, const Expr& first, const Exp
                                const Expr& third);
 // (6.8) L(φ, r) for a unit axis r
 TensorExpr axis_angle_rotation_expr(const VectorExpr& axis, const Expr& angle);
-// (6.36) from Euler parameters (e0, e) with e0² + e · e = 1
+// (6.36) from Euler parameters (e0, e), divided by e0² + e · e (a rotation for any (e0, e) ≠ 0)
 TensorExpr euler_parameter_rotation_expr(const Expr& e0, const VectorExpr& e);
 
 VectorExpr times(const TensorExpr& A, const VectorExpr& v);
