@@ -137,22 +137,33 @@ void write_newton(std::ostream& out, const System& system, const NewtonEquations
   }
   const bool latex = format == EquationFormat::latex;
   out << (latex ? "% " : "") << system.name
-      << ": Newton's second law m a = F + R for each particle (R: constraint force)\n";
+      << ": Newton's second law m a = F + R for each particle, Euler's laws m a = F + R and"
+         " dH/dt = M + M_R (about the centre of mass) for each body (R, M_R: constraint force and"
+         " moment)\n";
   if (latex) out << "\\begin{aligned}\n";
-  for (std::size_t p = 0; p < system.particles.size(); ++p) {
-    const std::string& name = system.particles[p].name;
-    const ParticleBalance& b = newton.particles[p];
+  // One balance law, component by component: lhs_k = rhs_k + <unknown>_k
+  const auto write_balance = [&](const std::string& label, const VectorExpr& lhs_vector,
+                                 const VectorExpr& rhs_vector, const std::string& unknown) {
     for (int k = 0; k < 3; ++k) {
-      const Expr lhs = collect_in(b.mass_times_acceleration[k], accelerations(system));
-      const Expr F = simplify(b.applied_force[k]);
+      const Expr lhs = collect_in(lhs_vector[k], accelerations(system));
+      const Expr rhs = simplify(rhs_vector[k]);
       if (latex) {
-        out << "  " << to_latex(lhs) << " &= " << to_latex(F) << " + R_{" << name << "," << k + 1
-            << "} \\\\\n";
+        out << "  " << to_latex(lhs) << " &= " << to_latex(rhs) << " + " << unknown << "_{" << label
+            << "," << k + 1 << "} \\\\\n";
       } else {
-        out << "  [" << name << "." << axes[k] << "]  " << to_text(lhs) << " = " << to_text(F)
-            << " + R_" << name << "." << axes[k] << "\n";
+        out << "  [" << label << "." << axes[k] << "]  " << to_text(lhs) << " = " << to_text(rhs)
+            << " + " << unknown << "_" << label << "." << axes[k] << "\n";
       }
     }
+  };
+  for (std::size_t p = 0; p < system.particles.size(); ++p) {
+    const ParticleBalance& b = newton.particles[p];
+    write_balance(system.particles[p].name, b.mass_times_acceleration, b.applied_force, "R");
+  }
+  for (std::size_t i = 0; i < system.bodies.size(); ++i) {
+    const BodyBalance& b = newton.bodies[i];
+    write_balance(system.bodies[i].name, b.mass_times_acceleration, b.applied_force, "R");
+    write_balance(system.bodies[i].name + ".H", b.momentum_rate, b.applied_moment, "M_R");
   }
   if (latex) out << "\\end{aligned}\n";
 }

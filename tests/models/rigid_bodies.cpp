@@ -51,6 +51,23 @@ TEST(RigidBodies, TorqueFreeBodyFollowsEulersEquations) {
   }
 }
 
+// (9.13) An axisymmetric body (λ1 = λ2 = 4, λ3 = 5): ω3 = Ω stays constant and (ω1, ω2) turns at
+// the rate ν = (λ3 − λ1) Ω / λ1, ω1 = a cos νt, ω2 = a sin νt
+TEST(RigidBodies, AxisymmetricBodyClosedForm) {
+  const double Omega = 5.0, a = 0.5, nu = (5.0 - 4.0) * Omega / 4.0;
+  const test::ModelRun run = test::run_model(
+      "torque-free-body",
+      {{"l1", 4.0}, {"l2", 4.0}, {"der(psi)", Omega}, {"der(theta)", 0.0}, {"der(phi)", a}},
+      [](SimulationOptions& o) { o.t_end = 5; });
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    const double t = run.at(i, "t");
+    EXPECT_NEAR(run.at(i, "w1"), a * std::cos(nu * t), 1e-9) << "t = " << t;
+    EXPECT_NEAR(run.at(i, "w2"), a * std::sin(nu * t), 1e-9) << "t = " << t;
+    EXPECT_NEAR(run.at(i, "w3"), Omega, 1e-9) << "t = " << t;
+  }
+}
+
 // A torque-free run of 1000 periods of the wobble (2.05 s, notes §4.2) keeps the energy and |H|
 // to 1e-9 relative
 TEST(RigidBodies, TorqueFreeBodyThousandPeriods) {
