@@ -380,6 +380,7 @@ void ModelReader::read_bodies(const YAML::Node& node, System& system) {
     const SystemScope scope(system);
     const Expr mass = scalar_expr(spec["mass"], scope, "mass");
     expect_state_only(spec["mass"], mass, system, "a mass");
+    shape_mass_ = mass;
     Body body{name,
               mass,
               inertia(spec["inertia"], system),

@@ -68,6 +68,32 @@ TEST(RigidBodies, AxisymmetricBodyClosedForm) {
   }
 }
 
+// (9.16)–(9.17), Fig. 9.6: the Magnus force bends the flight of a spinning ball; (x2, x3) and
+// (ẋ2, ẋ3) at t = 4 s for each BΩ (notes §4.3, the closed form (9.17) to 4 decimals). The ball's
+// inertia comes from the shape {sphere: {radius: R}}.
+TEST(RigidBodies, SpinningBallMagnusTrajectories) {
+  struct Row {
+    double k, x2, x3, v2, v3;
+  };
+  const Row table[] = {
+      {-0.5, 3.7097, -65.7066, -22.853, -31.095}, {-0.2, 30.7641, -53.6795, -0.736, -35.393},
+      {0.0, 40.0000, -38.4800, 10.000, -29.240},  {0.2, 40.9716, -23.3502, 14.670, -21.046},
+      {0.5, 32.6622, -9.0607, 14.530, -12.909},   {1.0, 22.5598, -7.2538, 17.254, -6.680}};
+  for (const Row& r : table) {
+    // BΩ = k with Ω = 20 rad/s
+    const test::ModelRun run = test::run_model("spinning-ball", {{"B", r.k / 20.0}});
+    ASSERT_TRUE(run.summary.ok) << run.summary.message;
+    const std::size_t last = run.rows.size() - 1;
+    EXPECT_NEAR(run.at(last, "y"), r.x2, 6e-5) << "B Omega = " << r.k;
+    EXPECT_NEAR(run.at(last, "z"), r.x3, 6e-5) << "B Omega = " << r.k;
+    EXPECT_NEAR(run.at(last, "der(y)"), r.v2, 6e-4) << "B Omega = " << r.k;
+    EXPECT_NEAR(run.at(last, "der(z)"), r.v3, 6e-4) << "B Omega = " << r.k;
+    EXPECT_NEAR(run.at(last, "x"), 0.0, 1e-12);
+    // the spin is untouched: ω = Ω E1 (no moment on the ball)
+    EXPECT_NEAR(run.at(last, "der(alpha)"), 20.0, 1e-10);
+  }
+}
+
 // A torque-free run of 1000 periods of the wobble (2.05 s, notes §4.2) keeps the energy and |H|
 // to 1e-9 relative
 TEST(RigidBodies, TorqueFreeBodyThousandPeriods) {
