@@ -66,16 +66,7 @@ TEST(DormandPrince, DenseOutputOrderIsAtLeastFour) {
   std::vector<double> errors;
   for (double h : {0.4, 0.2, 0.1, 0.05}) {
     DormandPrince54 stepper(test::cosine_growth, fixed(h));
-    stepper.initialize(0.0, vector({1.0}));
-    double error = 0.0;
-    while (stepper.t() != 5.0) {
-      stepper.step(5.0);
-      for (double theta : {0.21, 0.5, 0.83}) {
-        const double t = stepper.t_previous() + theta * (stepper.t() - stepper.t_previous());
-        error = std::max(error, std::abs(stepper.dense(t)[0] - test::cosine_growth_exact(t)));
-      }
-    }
-    errors.push_back(error);
+    errors.push_back(test::cosine_growth_dense_error(stepper));
   }
   for (double order : test::observed_orders(errors)) {
     std::cout << "dopri5 dense output observed order " << order << "\n";
