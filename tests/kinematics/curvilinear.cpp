@@ -10,7 +10,9 @@ using GiNaC::cos;
 using GiNaC::pow;
 using GiNaC::sin;
 
-bool vanishes(const Expr& e) { return simplify(e).is_zero(); }
+bool vanishes(const Expr& e) {
+  return simplify(e).is_zero();
+}
 
 // Spherical coordinates {R, φ, θ}, φ from E3 (§3.3, Ex. 3.3)
 struct Spherical {

@@ -7,7 +7,9 @@
 namespace unidyn {
 namespace {
 
-bool vanishes(const Expr& e) { return simplify(e).is_zero(); }
+bool vanishes(const Expr& e) {
+  return simplify(e).is_zero();
+}
 
 // T = ½ q̇ᵀ M q̇ + b · q̇ + T0 reproduces ½ Σ m v · v, for a rheonomic system (the bead on a hoop
 // spinning at Ω: T1 = 0, T0 = ½ m R0² Ω² sin²φ, Ex. 3.7) and a scleronomic one

@@ -13,17 +13,9 @@
 namespace unidyn {
 namespace {
 
-using Observations = std::vector<VectorObservation>;
+using test::book_L;
 
-// (6.8) typed: L(φ, r) a = cos φ (a − (r·a) r) − sin φ (a × r) + (r·a) r.
-Tensor book_L(double phi, const Vec3& r) {
-  Tensor L;
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 a = Vec3::Unit(k);
-    L.col(k) = std::cos(phi) * (a - r.dot(a) * r) - std::sin(phi) * a.cross(r) + r.dot(a) * r;
-  }
-  return L;
-}
+using Observations = std::vector<VectorObservation>;
 
 // (6.36) in components: (e0² − e·e) I + 2 e⊗e + 2 e0 [e]×, [e]× a = e × a (i.e. −2 e0 εe).
 Tensor quaternion_rotation(double e0, const Vec3& e) {

@@ -14,19 +14,10 @@
 namespace unidyn {
 namespace {
 
+using test::book_L;
+
 using test::kPi;
 using Vec4 = Eigen::Vector4d;
-
-// (6.8) typed from the book, applied to each E_k with Eigen's cross product:
-// L(φ, r) a = cos φ (a − (r·a) r) − sin φ (a × r) + (r·a) r, since (εr) a = a × r.
-Tensor book_L(double phi, const Vec3& r) {
-  Tensor L;
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 a = Vec3::Unit(k);
-    L.col(k) = std::cos(phi) * (a - r.dot(a) * r) - std::sin(phi) * a.cross(r) + r.dot(a) * r;
-  }
-  return L;
-}
 
 // (6.36) in components, typed from the book:
 // [R] = (e0² − e1² − e2² − e3²) I + 2 [e_i e_k] + [[0, −2e0e3, 2e0e2], [2e0e3, 0, −2e0e1],

@@ -12,19 +12,10 @@
 namespace unidyn {
 namespace {
 
+using test::book_L;
+
 using test::kPi;
 using Vec4 = Eigen::Vector4d;
-
-// (6.8) typed literally, also for a non-unit r: L(φ, r) a = cos φ (a − (r·a) r) − sin φ (a × r)
-// + (r·a) r, since (εr) a = a × r.
-Tensor book_L(double phi, const Vec3& r) {
-  Tensor L;
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 a = Vec3::Unit(k);
-    L.col(k) = std::cos(phi) * (a - r.dot(a) * r) - std::sin(phi) * a.cross(r) + r.dot(a) * r;
-  }
-  return L;
-}
 
 // (6.36) R̄(e0, e) = (e0² − e·e) I + 2 e⊗e − 2 e0 εe typed column by column, also for non-unit
 // (e0, e) (then it is |p|² times a rotation).

@@ -54,6 +54,17 @@ class Random {
   std::mt19937_64 engine_;
 };
 
+// (6.8) typed from the book, also for a non-unit r, column by column:
+// L(φ, r) a = cos φ (a − (r·a) r) − sin φ (a × r) + (r·a) r, since (εr) a = a × r.
+inline Tensor book_L(double phi, const Vec3& r) {
+  Tensor L;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 a = Vec3::Unit(k);
+    L.col(k) = std::cos(phi) * (a - r.dot(a) * r) - std::sin(phi) * a.cross(r) + r.dot(a) * r;
+  }
+  return L;
+}
+
 // Fourth-order central difference of a tensor-valued function of time: error O(h⁴).
 inline Tensor derivative(const std::function<Tensor(double)>& f, double t, double h = 1e-3) {
   return (8.0 * (f(t + h) - f(t - h)) - (f(t + 2 * h) - f(t - 2 * h))) / (12.0 * h);
