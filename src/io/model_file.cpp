@@ -13,17 +13,21 @@
 #include <sstream>
 #include <string_view>
 
+#include "unidyn/equations/newton.hpp"
 #include "unidyn/kinematics/constraint_gradient.hpp"
 #include "unidyn/kinematics/inertia.hpp"
 #include "unidyn/model/forces.hpp"
+#include "unidyn/model/joints.hpp"
 #include "unidyn/model/scope.hpp"
 #include "unidyn/symbolic/expression_parser.hpp"
 
 namespace unidyn {
 namespace {
 
-// Outputs may also name constraint forces: P.constraint_force = m a − F (the resultant on a
-// particle, §4.4), and c.force.P = λ ∂Ψ/∂r_P (the force of one constraint on a particle).
+// Outputs may also name constraint forces: P.constraint_force = m a − F and B.constraint_force =
+// m ā − F, B.constraint_moment = Ḣ − M (the resultants on a particle or body, §4.4, §8.6), and
+// c.force.N = Σ λ ∂Ψ/∂r_N or Σ λ f_N, c.moment.N = Σ λ h_N (8.22): the force (moment about the
+// centre of mass) of constraint c — or of all rows of joint c — on the particle or body N.
 class OutputScope : public SystemScope {
  public:
   explicit OutputScope(const System& system) : SystemScope(system), system_(system) {}
@@ -43,27 +47,61 @@ class OutputScope : public SystemScope {
       }
       return Value::of(R);
     }
-    for (std::size_t k = 0; k < system_.constraints.size(); ++k) {
-      const Constraint& c = system_.constraints[k];
-      if (c.name != owner || !member.starts_with("force.")) continue;
-      const auto p = system_.find_particle(member.substr(6));
-      if (!p) return std::nullopt;
-      const auto gradient = constraint_gradient(system_, constraint_row(system_, k));
-      return Value::of(Expr(c.multiplier) * gradient[*p]);
+    if (const auto b = system_.find_body(owner)) {
+      if (member != "constraint_force" && member != "constraint_moment") return std::nullopt;
+      const BodyBalance balance = newton_equations(system_).bodies[*b];
+      return Value::of(member == "constraint_force" ? balance.constraint_force()
+                                                    : balance.constraint_moment());
     }
-    return std::nullopt;
+    return constraint_load(owner, member);
   }
 
   std::vector<std::string> names() const override {
     std::vector<std::string> all = SystemScope::names();
     for (const auto& p : system_.particles) all.push_back(p.name + ".constraint_force");
+    for (const auto& b : system_.bodies) {
+      all.push_back(b.name + ".constraint_force");
+      all.push_back(b.name + ".constraint_moment");
+    }
+    std::set<std::string> joints;
     for (const auto& c : system_.constraints) {
-      for (const auto& p : system_.particles) all.push_back(c.name + ".force." + p.name);
+      joints.insert(c.name);
+      joints.insert(c.joint);
+    }
+    for (const auto& j : joints) {
+      for (const auto& p : system_.particles) all.push_back(j + ".force." + p.name);
+      for (const auto& b : system_.bodies) {
+        all.push_back(j + ".force." + b.name);
+        all.push_back(j + ".moment." + b.name);
+      }
     }
     return all;
   }
 
  private:
+  // c.force.N or c.moment.N summed over the rows of c
+  std::optional<Value> constraint_load(const std::string& owner, const std::string& member) const {
+    const bool force = member.starts_with("force."), moment = member.starts_with("moment.");
+    if (!force && !moment) return std::nullopt;
+    const std::string target = member.substr(force ? 6 : 7);
+    const auto p = system_.find_particle(target);
+    const auto b = system_.find_body(target);
+    if (!b && (!p || moment)) return std::nullopt;
+    VectorExpr sum;
+    bool found = false;
+    for (std::size_t k = 0; k < system_.constraints.size(); ++k) {
+      const Constraint& c = system_.constraints[k];
+      if (c.name != owner && c.joint != owner) continue;
+      found = true;
+      const ConstraintLoads loads = constraint_loads(system_, k);
+      const VectorExpr& v =
+          p ? loads.particle_force[*p] : (force ? loads.body_force[*b] : loads.body_moment[*b]);
+      sum = sum + Expr(c.multiplier) * v;
+    }
+    if (!found) return std::nullopt;
+    return Value::of(sum);
+  }
+
   const System& system_;
 };
 
@@ -231,6 +269,7 @@ class ModelReader {
   void read_forces(const YAML::Node& node, System& system);
   ForcePoint force_point(const YAML::Node& node, const System& system, const Scope& scope);
   void read_constraints(const YAML::Node& node, System& system);
+  void read_joint(const YAML::Node& spec, const std::string& name, System& system);
   void read_initial(const YAML::Node& node, System& system);
   void read_simulate(const YAML::Node& node, System& system);
   std::vector<Output> read_outputs(const YAML::Node& node, const System& system,
@@ -516,9 +555,15 @@ void ModelReader::add_unit_norm_constraint(const YAML::Node& node, const std::st
   }
   const std::string name = body + "_unit";
   system.constraints.push_back(
-      {name, Constraint::Kind::position, norm_squared - 1,
-       GiNaC::realsymbol("lambda(" + name + ")", "\\lambda_{\\mathrm{" + name + "}}"), false,
-       std::nullopt, at(node)});
+      {name,
+       Constraint::Kind::position,
+       norm_squared - 1,
+       GiNaC::realsymbol("lambda(" + name + ")", "\\lambda_{\\mathrm{" + name + "}}"),
+       false,
+       std::nullopt,
+       at(node),
+       name,
+       {}});
 }
 
 ForcePoint ModelReader::force_point(const YAML::Node& node, const System& system,
@@ -667,19 +712,33 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
   std::set<std::string> names;
   for (const auto& spec : node) {
     expect_map(spec, "a constraint");
-    expect_keys(spec, {"name", "position", "velocity", "unilateral", "friction"}, "a constraint");
-    if (!!spec["position"] == !!spec["velocity"]) {
+    expect_keys(spec, {"name", "position", "velocity", "ball", "pin", "unilateral", "friction"},
+                "a constraint");
+    if (!!spec["position"] + !!spec["velocity"] + !!spec["ball"] + !!spec["pin"] != 1) {
       fail(spec,
-           "a constraint needs exactly one of position: Ψ(q, t) or velocity: (linear in der(q))");
+           "a constraint needs exactly one of position: Ψ(q, t), velocity: (linear in der(q)), "
+           "ball: or pin: (a joint)");
     }
     // one name space with parameters, coordinates and particles (c.lambda, lambda(c) columns)
     const std::string name = spec["name"] ? new_name(spec["name"], system, "constraint")
                                           : "c" + std::to_string(system.constraints.size() + 1);
+    if (spec["ball"] || spec["pin"]) {
+      const std::size_t first_row = system.constraints.size();
+      read_joint(spec, name, system);
+      for (std::size_t k = first_row; k < system.constraints.size(); ++k) {
+        if (!names.insert(system.constraints[k].name).second) {
+          fail(spec, "the joint's row '" + system.constraints[k].name + "' is already defined");
+        }
+      }
+      names.insert(name);
+      continue;
+    }
     Constraint c{
-        name,    Constraint::Kind::position,
-        0,       GiNaC::realsymbol("lambda(" + name + ")", "\\lambda_{\\mathrm{" + name + "}}"),
-        false,   std::nullopt,
-        at(spec)};
+        name,     Constraint::Kind::position,
+        0,        GiNaC::realsymbol("lambda(" + name + ")", "\\lambda_{\\mathrm{" + name + "}}"),
+        false,    std::nullopt,
+        at(spec), name,
+        {}};
     if (!names.insert(c.name).second || system.find_parameter(c.name) ||
         system.find_coordinate(c.name) || system.find_particle(c.name)) {
       fail(spec["name"] ? spec["name"] : spec, "'" + c.name + "' is already defined");
@@ -731,6 +790,68 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
       c.friction = friction;
     }
     system.constraints.push_back(std::move(c));
+  }
+}
+
+// ball: {body: A, point: [X on A], to: B, to_point: [X on B]} — or, without to:, a fixed point
+// to_point: (default the origin); pin: the same with axis: [A on A] and to_axis: [on B, or a
+// fixed direction; default the same numbers as axis]. Rows name_1 .. name_3 (.. name_5 for a pin).
+void ModelReader::read_joint(const YAML::Node& spec, const std::string& name, System& system) {
+  const bool pin = static_cast<bool>(spec["pin"]);
+  const YAML::Node j = pin ? spec["pin"] : spec["ball"];
+  const std::string what = pin ? "a pin" : "a ball joint";
+  expect_map(j, what);
+  if (pin) {
+    expect_keys(j, {"body", "point", "axis", "to", "to_point", "to_axis"}, what);
+  } else {
+    expect_keys(j, {"body", "point", "to", "to_point"}, what);
+  }
+  if (spec["unilateral"] || spec["friction"]) fail(spec, "a joint cannot be unilateral or rough");
+  if (!j["body"]) fail(j, what + " needs body: (and to: another body, or the ground without it)");
+  if (pin && !j["axis"]) fail(j, "a pin needs axis: [A1, A2, A3] on the body's basis");
+  const SystemScope scope(system);
+  const auto end = [&](const char* body_key, const char* point_key, const char* axis_key) {
+    JointEnd e;
+    if (j[body_key]) {
+      e.body = system.find_body(scalar(j[body_key], body_key));
+      if (!e.body) fail(j[body_key], std::string(body_key) + ": must name a body");
+    }
+    if (j[point_key]) {
+      e.point = vector_expr(j[point_key], scope, point_key);
+      expect_state_only(j[point_key], e.point, system, "a joint's point", false);
+      if (e.body) {
+        for (int i = 0; i < 3; ++i) {
+          for (const auto& q : system.coordinates()) {
+            if (e.point[i].has(q.value) || e.point[i].has(system.time())) {
+              fail(j[point_key], "a point on a body is constant on its basis");
+            }
+          }
+        }
+      }
+    }
+    if (pin) {
+      const YAML::Node& a = j[axis_key] ? j[axis_key] : j["axis"];
+      e.axis = vector_expr(a, scope, axis_key);
+      for (int i = 0; i < 3; ++i) {
+        if (!GiNaC::is_a<GiNaC::numeric>(e.axis[i])) {
+          fail(a, "an axis is a vector of numbers, e.g. [0, 0, 1]");
+        }
+      }
+      if (norm(e.axis).is_zero()) fail(a, "an axis cannot be zero");
+    }
+    return e;
+  };
+  const JointEnd first = end("body", "point", "axis");
+  const JointEnd second = end("to", "to_point", "to_axis");
+  if (first.body && first.body == second.body) fail(j, what + " joins two different bodies");
+  const std::vector<Constraint> rows = pin ? pin_joint(system, name, first, second, at(spec))
+                                           : ball_joint(system, name, first, second, at(spec));
+  for (const auto& c : rows) {
+    if (system.find_parameter(c.name) || system.find_coordinate(c.name) ||
+        system.find_particle(c.name) || system.find_body(c.name)) {
+      fail(spec, "the joint's row '" + c.name + "' clashes with a name already defined");
+    }
+    system.constraints.push_back(c);
   }
 }
 

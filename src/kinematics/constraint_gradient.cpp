@@ -1,4 +1,4 @@
-// ∂Ψ/∂r_P from ∂Ψ/∂q.
+// The loads of a constraint on particles and bodies from its row in the coordinates.
 #include "unidyn/kinematics/constraint_gradient.hpp"
 
 #include <stdexcept>
@@ -6,6 +6,48 @@
 #include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn {
+namespace {
+
+// What moves with the coordinates and what a constraint load on it pairs with: a particle's
+// position (∂r/∂q^i), a body's centre (∂x̄/∂q^i) or a body's orientation (∂ω/∂q̇^i).
+struct Slot {
+  enum class Kind { particle, center, orientation } kind;
+  std::size_t index;
+  std::vector<VectorExpr> partial;  // per coordinate
+};
+
+bool moves(const std::vector<VectorExpr>& partial) {
+  for (const auto& v : partial) {
+    for (int k = 0; k < 3; ++k) {
+      if (!v[k].expand().is_zero()) return true;
+    }
+  }
+  return false;
+}
+
+std::vector<Slot> moving_slots(const System& system) {
+  const auto& q = system.coordinates();
+  std::vector<Slot> slots;
+  const auto add = [&](Slot::Kind kind, std::size_t index, const auto& partial_of) {
+    Slot slot{kind, index, {}};
+    for (const auto& c : q) slot.partial.push_back(partial_of(c));
+    if (moves(slot.partial)) slots.push_back(std::move(slot));
+  };
+  for (std::size_t p = 0; p < system.particles.size(); ++p) {
+    add(Slot::Kind::particle, p,
+        [&](const CoordinateSymbols& c) { return diff(system.particles[p].position, c.value); });
+  }
+  for (std::size_t b = 0; b < system.bodies.size(); ++b) {
+    add(Slot::Kind::center, b,
+        [&](const CoordinateSymbols& c) { return diff(system.bodies[b].center, c.value); });
+    const VectorExpr omega = system.angular_velocity(b);
+    add(Slot::Kind::orientation, b,
+        [&](const CoordinateSymbols& c) { return diff(omega, c.rate); });
+  }
+  return slots;
+}
+
+}  // namespace
 
 std::vector<Expr> constraint_row(const System& system, std::size_t k) {
   const Constraint& c = system.constraints.at(k);
@@ -17,50 +59,71 @@ std::vector<Expr> constraint_row(const System& system, std::size_t k) {
   return row;
 }
 
-std::vector<VectorExpr> constraint_gradient(const System& system, const std::vector<Expr>& a) {
-  const auto& q = system.coordinates();
-  const auto n = static_cast<unsigned>(q.size());
-  // the moving particles: those whose position depends on a coordinate
-  std::vector<std::size_t> moving;
-  for (std::size_t p = 0; p < system.particles.size(); ++p) {
-    bool moves = false;
-    for (const auto& c : q)
-      moves = moves || system.particles[p].position.c[0].has(c.value) ||
-              system.particles[p].position.c[1].has(c.value) ||
-              system.particles[p].position.c[2].has(c.value);
-    if (moves) moving.push_back(p);
-  }
-  if (3 * moving.size() != q.size()) {
+ConstraintLoads solve_constraint_loads(const System& system, const std::vector<Expr>& a) {
+  const auto n = static_cast<unsigned>(system.coordinates().size());
+  const std::vector<Slot> slots = moving_slots(system);
+  if (3 * slots.size() != n) {
     throw std::invalid_argument(
-        "a constraint force on a particle needs three coordinates per moving particle (the "
-        "positions then determine the coordinates); use P.constraint_force = m a - F instead");
+        "a constraint's force on a particle or body needs the coordinates to fix the moving "
+        "positions and orientations one to one (3 per moving particle, 3 per moving centre, 3 per "
+        "turning body); use P.constraint_force / B.constraint_force (m a - F) instead");
   }
-  // Jᵀ g = a with J_(3P+k),i = ∂(r_P · E_k)/∂q^i
-  GiNaC::matrix Jt(n, n), rhs(n, 1);
-  GiNaC::matrix unknowns(n, 1);
+  // Jᵀ x = a with column block s of Jᵀ the partials of slot s
+  GiNaC::matrix Jt(n, n), rhs(n, 1), unknowns(n, 1);
   for (unsigned i = 0; i < n; ++i) {
     rhs(i, 0) = a[i];
     unknowns(i, 0) = GiNaC::symbol();
-    for (std::size_t m = 0; m < moving.size(); ++m) {
+    for (std::size_t s = 0; s < slots.size(); ++s) {
       for (unsigned k = 0; k < 3; ++k) {
-        Jt(i, static_cast<unsigned>(3 * m) + k) =
-            system.particles[moving[m]].position.c[k].diff(q[i].value);
+        Jt(i, static_cast<unsigned>(3 * s) + k) = slots[s].partial[i][static_cast<int>(k)];
       }
     }
   }
-  GiNaC::matrix g;
+  GiNaC::matrix x;
   try {
-    g = Jt.solve(unknowns, rhs);
+    x = Jt.solve(unknowns, rhs);
   } catch (const std::runtime_error&) {
-    throw std::invalid_argument("the coordinates do not determine the particles' positions here");
+    throw std::invalid_argument(
+        "the coordinates do not determine the positions and orientations here");
   }
-  std::vector<VectorExpr> gradient(system.particles.size());
-  for (std::size_t m = 0; m < moving.size(); ++m) {
+  ConstraintLoads loads{std::vector<VectorExpr>(system.particles.size()),
+                        std::vector<VectorExpr>(system.bodies.size()),
+                        std::vector<VectorExpr>(system.bodies.size())};
+  for (std::size_t s = 0; s < slots.size(); ++s) {
+    VectorExpr v;
     for (unsigned k = 0; k < 3; ++k) {
-      gradient[moving[m]][static_cast<int>(k)] = simplify(g(static_cast<unsigned>(3 * m) + k, 0));
+      v[static_cast<int>(k)] = simplify(x(static_cast<unsigned>(3 * s) + k, 0));
+    }
+    switch (slots[s].kind) {
+      case Slot::Kind::particle:
+        loads.particle_force[slots[s].index] = v;
+        break;
+      case Slot::Kind::center:
+        loads.body_force[slots[s].index] = v;
+        break;
+      case Slot::Kind::orientation:
+        loads.body_moment[slots[s].index] = v;
+        break;
     }
   }
-  return gradient;
+  return loads;
+}
+
+ConstraintLoads constraint_loads(const System& system, std::size_t k) {
+  const Constraint& c = system.constraints.at(k);
+  if (c.loads.empty()) return solve_constraint_loads(system, constraint_row(system, k));
+  ConstraintLoads loads{std::vector<VectorExpr>(system.particles.size()),
+                        std::vector<VectorExpr>(system.bodies.size()),
+                        std::vector<VectorExpr>(system.bodies.size())};
+  for (const auto& load : c.loads) {
+    loads.body_force[load.body] = load.force;
+    loads.body_moment[load.body] = load.moment;
+  }
+  return loads;
+}
+
+std::vector<VectorExpr> constraint_gradient(const System& system, const std::vector<Expr>& a) {
+  return solve_constraint_loads(system, a).particle_force;
 }
 
 }  // namespace unidyn

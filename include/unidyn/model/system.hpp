@@ -88,6 +88,16 @@ struct Friction {
   Expr static_coefficient;
 };
 
+// (8.22) The Lagrange representation of a constraint's load on a body: with the constraint's
+// velocity form Σ_B (f_B · v̄_B + h_B · ω_B) + e = 0, it exerts F_c = λ f_B and M_c = λ h_B (about
+// the centre of mass) on body B. Joints know f and h in closed form; other constraints leave
+// `loads` empty and unidyn solves for them (kinematics/constraint_gradient).
+struct ConstraintLoad {
+  std::size_t body;
+  VectorExpr force;   // f_B
+  VectorExpr moment;  // h_B
+};
+
 // (1.9)–(1.13) A constraint. position: Ψ(q, t) = 0; velocity: a(q, t) · q̇ + e(q, t) = 0.
 // Its force on the system is λ ∂Ψ/∂q (generalised) — on a particle R = Σ λ ∂Ψ/∂r.
 struct Constraint {
@@ -99,6 +109,9 @@ struct Constraint {
   bool unilateral = false;
   std::optional<Friction> friction;
   SourcePosition where;
+  // The joint this constraint is one row of (its own name when it stands alone), and its loads.
+  std::string joint;
+  std::vector<ConstraintLoad> loads;
 };
 
 // A named scalar to report: an extra CSV column, or a quantity the summary checks for drift.

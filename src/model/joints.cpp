@@ -1,0 +1,108 @@
+// Ball joints and pins as constraints with their Lagrange representation (8.22)–(8.24).
+#include "unidyn/model/joints.hpp"
+
+#include <stdexcept>
+
+namespace unidyn {
+namespace {
+
+// The end's point in space x_P and its arm π_P = x_P − x̄ (0 on the ground).
+struct Placed {
+  VectorExpr position;
+  VectorExpr arm;
+};
+
+Placed place(const System& system, const JointEnd& end) {
+  if (!end.body) return {end.point, VectorExpr{}};
+  const Body& body = system.bodies[*end.body];
+  const VectorExpr arm = times(body.rotation, end.point);
+  return {body.center + arm, arm};
+}
+
+// A vector on the end's body basis carried into space (Q A), or the ground's fixed vector.
+VectorExpr in_space(const System& system, const JointEnd& end, const VectorExpr& v) {
+  return end.body ? times(system.bodies[*end.body].rotation, v) : v;
+}
+
+Constraint row(const std::string& joint, int k, const Expr& psi, const SourcePosition& where) {
+  const std::string name = joint + "_" + std::to_string(k);
+  return {name,
+          Constraint::Kind::position,
+          psi,
+          GiNaC::realsymbol("lambda(" + name + ")",
+                            "\\mu_{\\mathrm{" + joint + "}," + std::to_string(k) + "}"),
+          false,
+          std::nullopt,
+          where,
+          joint,
+          {}};
+}
+
+// Adds (f, h) on the end's body, if it has one.
+void load(Constraint& c, const JointEnd& end, const VectorExpr& f, const VectorExpr& h) {
+  if (end.body) c.loads.push_back({*end.body, f, h});
+}
+
+// A unit vector of exact numbers, from numbers.
+VectorExpr unit_numeric(const VectorExpr& v, const char* which) {
+  for (int i = 0; i < 3; ++i) {
+    if (!GiNaC::is_a<GiNaC::numeric>(v[i])) {
+      throw std::invalid_argument(std::string("the ") + which +
+                                  " of a pin must be a vector of numbers");
+    }
+  }
+  const Expr length = norm(v);
+  if (length.is_zero()) throw std::invalid_argument(std::string("the ") + which + " is zero");
+  return v / length;
+}
+
+}  // namespace
+
+std::vector<Constraint> ball_joint(const System& system, const std::string& name,
+                                   const JointEnd& first, const JointEnd& second,
+                                   const SourcePosition& where) {
+  const Placed p1 = place(system, first), p2 = place(system, second);
+  std::vector<Constraint> rows;
+  for (int k = 1; k <= 3; ++k) {
+    // Ψ_k = (x_P1 − x_P2) · E_k, f = ±E_k, h = ±π_P × E_k
+    const VectorExpr E = basis_vector_expr(k);
+    Constraint c = row(name, k, dot(p1.position - p2.position, E), where);
+    load(c, first, E, cross(p1.arm, E));
+    load(c, second, -E, -cross(p2.arm, E));
+    rows.push_back(std::move(c));
+  }
+  return rows;
+}
+
+std::vector<Constraint> pin_joint(const System& system, const std::string& name,
+                                  const JointEnd& first, const JointEnd& second,
+                                  const SourcePosition& where) {
+  std::vector<Constraint> rows = ball_joint(system, name, first, second, where);
+  const VectorExpr A1 = unit_numeric(first.axis, "first axis");
+  const VectorExpr A2 = unit_numeric(second.axis, "second axis");
+  // {A2, B1, B2} orthonormal: B1 from the basis vector least aligned with A2
+  const auto size = [&](int k) {
+    return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(GiNaC::abs(A2[k - 1]))).to_double();
+  };
+  int least = 1;
+  for (int k = 2; k <= 3; ++k) {
+    if (size(k) < size(least)) least = k;
+  }
+  VectorExpr B1 = cross(A2, basis_vector_expr(least));
+  B1 = B1 / norm(B1);
+  const VectorExpr B2 = cross(A2, B1);
+  const VectorExpr a1 = in_space(system, first, A1);
+  int k = 4;
+  for (const VectorExpr& B : {B1, B2}) {
+    // Ψ = a_1 · b_j, f = 0, h = ±a_1 × b_j
+    const VectorExpr b = in_space(system, second, B);
+    Constraint c = row(name, k++, dot(a1, b), where);
+    const VectorExpr h = cross(a1, b);
+    load(c, first, VectorExpr{}, h);
+    load(c, second, VectorExpr{}, -h);
+    rows.push_back(std::move(c));
+  }
+  return rows;
+}
+
+}  // namespace unidyn
