@@ -6,9 +6,8 @@
 // multipliers through (8.22)–(8.23)).
 #include <cmath>
 
+#include "support/joint_loads.hpp"
 #include "support/model_run.hpp"
-#include "unidyn/kinematics/constraint_gradient.hpp"
-#include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn {
 namespace {
@@ -47,21 +46,7 @@ TEST(UnbalancedRotor, PinMultipliersGiveTheBearingLoads) {
 TEST(UnbalancedRotor, PinLoadsMatchTheirRowsInTheCoordinates) {
   const System system = load_model(test::model_path("unbalanced-rotor-pinned"));
   ASSERT_EQ(system.constraints.size(), 5u);
-  GiNaC::exmap state = system.parameter_values();
-  double value = 0.3;
-  for (const auto& q : system.coordinates()) state[q.value] = value += 0.17;
-  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
-    ASSERT_FALSE(system.constraints[k].loads.empty());
-    const ConstraintLoads closed = constraint_loads(system, k);
-    const ConstraintLoads solved = solve_constraint_loads(system, constraint_row(system, k));
-    for (int i = 0; i < 3; ++i) {
-      const auto number = [&](const Expr& e) {
-        return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(state))).to_double();
-      };
-      EXPECT_NEAR(number(closed.body_force[0][i]), number(solved.body_force[0][i]), 1e-13) << k;
-      EXPECT_NEAR(number(closed.body_moment[0][i]), number(solved.body_moment[0][i]), 1e-13) << k;
-    }
-  }
+  test::expect_joint_loads_match_rows(system);
 }
 
 }  // namespace
