@@ -583,7 +583,8 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
   for (const auto& entry : node) {
     if (!entry.IsMap() || entry.size() != 1) {
       fail(entry,
-           "each force is one of: gravity, spring, damper, force, moment, potential, gravitation");
+           "each force is one of: gravity, spring, damper, force, moment, potential, gravitation, "
+           "gravity_gradient");
     }
     const std::string kind = entry.begin()->first.Scalar();
     const YAML::Node spec = entry.begin()->second;  // a copy: the iterator is a temporary
@@ -670,6 +671,23 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
         const VectorExpr M = vector_expr(spec["value"], scope, "value");
         expect_state_only(spec["value"], M, system, "a moment", true);
         element = body_moment(*b, M);
+      } else if (kind == "gravity_gradient") {
+        expect_map(spec, "gravity_gradient");
+        expect_keys(spec, {"on", "GM", "center"}, "gravity_gradient");
+        if (!spec["on"] || !spec["GM"]) {
+          fail(spec,
+               "gravity_gradient needs on: (a body) and GM: (center: defaults to the origin)");
+        }
+        const auto b = system.find_body(scalar(spec["on"], "on"));
+        if (!b) fail(spec["on"], "on: must name a body");
+        const Expr GM = scalar_expr(spec["GM"], scope, "GM");
+        expect_state_only(spec["GM"], GM, system, "GM");
+        VectorExpr center;
+        if (spec["center"]) {
+          center = vector_expr(spec["center"], scope, "center");
+          expect_state_only(spec["center"], center, system, "the attracting centre");
+        }
+        element = gravity_gradient(system, *b, GM, center);
       } else if (kind == "potential") {
         const Expr U = scalar_expr(spec, scope, "potential");
         expect_state_only(spec, U, system, "a potential U(q, t)");
@@ -690,8 +708,8 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
         element = gravitation(system, *p1, *p2, G);
       } else {
         fail(entry.begin()->first, "unknown force '" + kind +
-                                       "' (expected gravity, spring, damper, force, potential or "
-                                       "gravitation)");
+                                       "' (expected gravity, spring, damper, force, moment, "
+                                       "potential, gravitation or gravity_gradient)");
       }
     } catch (const ModelError&) {
       throw;

@@ -108,3 +108,29 @@ ForceElement body_moment(std::size_t body, const VectorExpr& moment) {
 }
 
 }  // namespace unidyn
+
+namespace unidyn {
+
+ForceElement gravity_gradient(const System& system, std::size_t body, const Expr& GM,
+                              const VectorExpr& attractor) {
+  ForceElement element =
+      new_element(ForceElement::Kind::gravity_gradient, "gravity_gradient", true);
+  const Body& b = system.bodies[body];
+  const VectorExpr d = b.center - attractor;
+  const Expr R = norm(d);
+  const VectorExpr c = d / R;
+  // J c = Q J0 Qᵀ c; tr J = tr J0
+  const VectorExpr Jc = times(b.rotation, times(b.inertia, times(b.rotation.transpose(), c)));
+  const Expr trace = b.inertia(0, 0) + b.inertia(1, 1) + b.inertia(2, 2);
+  const Expr cJc = dot(c, Jc);
+  // (8.25) MacCullagh's potential, force and moment
+  element.potential = -GM * b.mass / R - GM * trace / (2 * GiNaC::pow(R, 3)) +
+                      3 * GM * cJc / (2 * GiNaC::pow(R, 3));
+  const VectorExpr F = (-GM * b.mass / GiNaC::pow(R, 2)) * c -
+                       (3 * GM / (2 * GiNaC::pow(R, 4))) * (2 * Jc + (trace - 5 * cJc) * c);
+  element.body_forces.push_back({body, b.center, F});
+  element.moments.push_back({body, (3 * GM / GiNaC::pow(R, 3)) * cross(c, Jc)});
+  return element;
+}
+
+}  // namespace unidyn

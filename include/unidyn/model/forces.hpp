@@ -39,6 +39,14 @@ ForceElement body_force(std::size_t body, const VectorExpr& point, const VectorE
 // A pure moment M(q, q̇, t) on a body (e.g. a non-conservative moment, Ziegler's follower torque).
 ForceElement body_moment(std::size_t body, const VectorExpr& moment);
 
+// (8.25) MacCullagh's far-field approximation to the gravitation of a sphere (G M, centre x_O) on
+// body B, with R = ‖x̄ − x_O‖, c = (x̄ − x_O)/R and J = Q J0 Qᵀ the inertia about x̄:
+//   U = −G M m/R − (G M/(2R³)) tr J + (3 G M/(2R³)) c · J c
+//   F = −(G M m/R²) c − (3 G M/(2R⁴)) (2 J c + (tr J − 5 c · J c) c)   at x̄
+//   M = (3 G M/R³) c × J c                                             about x̄
+ForceElement gravity_gradient(const System& system, std::size_t body, const Expr& GM,
+                              const VectorExpr& attractor);
+
 // A potential energy U(q, t) given directly in the coordinates.
 ForceElement coordinate_potential(const Expr& U);
 

@@ -70,7 +70,16 @@ struct BodyMoment {
 // are −∂U/∂r (listed in `forces` for Newton's form); a non-conservative element has only forces.
 // A bare `potential:` in the coordinates has no force vectors: both forms see it through −∂U/∂q.
 struct ForceElement {
-  enum class Kind { gravity, spring, damper, force, potential, gravitation, moment };
+  enum class Kind {
+    gravity,
+    spring,
+    damper,
+    force,
+    potential,
+    gravitation,
+    moment,
+    gravity_gradient
+  };
   Kind kind;
   std::string label;
   SourcePosition where;
