@@ -566,16 +566,45 @@ void ModelReader::add_unit_norm_constraint(const YAML::Node& node, const std::st
        {}});
 }
 
+// A particle's name, {on: B, point: [X1, X2, X3]} (a material point of body B, components on its
+// basis from its centre), or a fixed vector. A point that moves must be one of the first two: a
+// force at a point of no mass would be seen by Lagrange's equations (through its potential) and
+// not by Euler's laws.
 ForcePoint ModelReader::force_point(const YAML::Node& node, const System& system,
                                     const Scope& scope) {
   if (node.IsScalar()) {
     if (const auto p = system.find_particle(node.Scalar())) {
-      return {p, system.particles[*p].position};
+      return {p, system.particles[*p].position, std::nullopt};
     }
+  }
+  if (node.IsMap()) {
+    expect_keys(node, {"on", "point"}, "a body point");
+    if (!node["on"]) fail(node, "a body point is {on: B, point: [X1, X2, X3]}");
+    const auto b = system.find_body(scalar(node["on"], "on"));
+    if (!b) fail(node["on"], "on: must name a body");
+    const VectorExpr X = node["point"] ? vector_expr(node["point"], scope, "point") : VectorExpr{};
+    expect_state_only(node["point"] ? node["point"] : node, X, system, "a body point");
+    for (int i = 0; i < 3; ++i) {
+      for (const auto& q : system.coordinates()) {
+        if (X[i].has(q.value) || X[i].has(system.time())) {
+          fail(node["point"], "a point on a body is constant on its basis");
+        }
+      }
+    }
+    return {std::nullopt, system.material_point(*b, X), b};
   }
   const VectorExpr point = vector_expr(node, scope, "a point (a particle name or a vector)");
   expect_state_only(node, point, system, "a point");
-  return {std::nullopt, point};
+  for (int i = 0; i < 3; ++i) {
+    for (const auto& q : system.coordinates()) {
+      if (point[i].has(q.value)) {
+        fail(node, "this point moves with " + q.name +
+                       " but is neither a particle nor on a body: use a particle's name or {on: B, "
+                       "point: [X1, X2, X3]}");
+      }
+    }
+  }
+  return {std::nullopt, point, std::nullopt};
 }
 
 void ModelReader::read_forces(const YAML::Node& node, System& system) {
@@ -584,7 +613,7 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
     if (!entry.IsMap() || entry.size() != 1) {
       fail(entry,
            "each force is one of: gravity, spring, damper, force, moment, potential, gravitation, "
-           "gravity_gradient");
+           "gravity_gradient, torsion_spring");
     }
     const std::string kind = entry.begin()->first.Scalar();
     const YAML::Node spec = entry.begin()->second;  // a copy: the iterator is a temporary
@@ -688,6 +717,33 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
           expect_state_only(spec["center"], center, system, "the attracting centre");
         }
         element = gravity_gradient(system, *b, GM, center);
+      } else if (kind == "torsion_spring") {
+        expect_map(spec, "torsion_spring");
+        expect_keys(spec, {"on", "angle", "stiffness", "rest_angle"}, "torsion_spring");
+        if (!spec["on"] || !spec["angle"] || !spec["stiffness"]) {
+          fail(spec,
+               "a torsion_spring needs on: (a body), angle: (one of its Euler angles) and "
+               "stiffness:");
+        }
+        const auto b = system.find_body(scalar(spec["on"], "on"));
+        if (!b) fail(spec["on"], "on: must name a body");
+        const auto& chart = system.bodies[*b].chart;
+        if (!chart)
+          fail(spec["on"], "a torsion_spring needs a body turned by {euler: .., angles: [..]}");
+        const auto q = system.find_coordinate(scalar(spec["angle"], "angle"));
+        int angle = -1;
+        for (int i = 0; i < 3; ++i) {
+          if (q && chart->coordinates[static_cast<std::size_t>(i)] == *q) angle = i;
+        }
+        if (angle < 0) fail(spec["angle"], "angle: must be one of the body's Euler angles");
+        const Expr K = scalar_expr(spec["stiffness"], scope, "stiffness");
+        expect_state_only(spec["stiffness"], K, system, "a stiffness");
+        Expr rest = 0;
+        if (spec["rest_angle"]) {
+          rest = scalar_expr(spec["rest_angle"], scope, "rest_angle");
+          expect_state_only(spec["rest_angle"], rest, system, "a rest angle");
+        }
+        element = torsion_spring(system, *b, angle, K, rest);
       } else if (kind == "potential") {
         const Expr U = scalar_expr(spec, scope, "potential");
         expect_state_only(spec, U, system, "a potential U(q, t)");
@@ -709,7 +765,8 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
       } else {
         fail(entry.begin()->first, "unknown force '" + kind +
                                        "' (expected gravity, spring, damper, force, moment, "
-                                       "potential, gravitation or gravity_gradient)");
+                                       "potential, gravitation, gravity_gradient or "
+                                       "torsion_spring)");
       }
     } catch (const ModelError&) {
       throw;

@@ -4,10 +4,11 @@
 namespace unidyn {
 namespace {
 
-// Adds F at a point to the element when the point is a particle (forces on massless fixed points
-// are reactions the system does not see).
+// Adds F at a point to the element when the point is a particle or on a body (forces on fixed
+// points are reactions the system does not see).
 void push_force(ForceElement& element, const ForcePoint& point, const VectorExpr& F) {
   if (point.particle) element.forces.push_back({*point.particle, F});
+  if (point.body) element.body_forces.push_back({*point.body, point.position, F});
 }
 
 }  // namespace
@@ -130,6 +131,22 @@ ForceElement gravity_gradient(const System& system, std::size_t body, const Expr
                        (3 * GM / (2 * GiNaC::pow(R, 4))) * (2 * Jc + (trace - 5 * cJc) * c);
   element.body_forces.push_back({body, b.center, F});
   element.moments.push_back({body, (3 * GM / GiNaC::pow(R, 3)) * cross(c, Jc)});
+  return element;
+}
+
+}  // namespace unidyn
+
+namespace unidyn {
+
+ForceElement torsion_spring(const System& system, std::size_t body, int angle, const Expr& K,
+                            const Expr& rest_angle) {
+  ForceElement element = new_element(ForceElement::Kind::torsion_spring, "torsion_spring", true);
+  const auto i = static_cast<std::size_t>(angle);
+  const Expr gamma = system.coordinates()[system.bodies[body].chart->coordinates[i]].value;
+  // U = ½ K (γ − γ0)²; (8.27) M = −∂U/∂γ g^i
+  element.potential = K * GiNaC::pow(gamma - rest_angle, 2) / 2;
+  const VectorExpr dual = system.dual_euler_basis(body)[i];
+  element.moments.push_back({body, -K * (gamma - rest_angle) * dual});
   return element;
 }
 

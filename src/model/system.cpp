@@ -1,6 +1,8 @@
 // Queries on a System.
 #include "unidyn/model/system.hpp"
 
+#include "unidyn/symbolic/printing.hpp"
+
 namespace unidyn {
 namespace {
 
@@ -55,6 +57,25 @@ VectorExpr System::center_velocity(std::size_t b) const {
 VectorExpr System::angular_momentum(std::size_t b) const {
   // H = J ω = Q J0 ω0
   return times(bodies[b].rotation, times(bodies[b].inertia, body_angular_velocity(b)));
+}
+
+std::array<VectorExpr, 3> System::euler_basis(std::size_t b) const {
+  const VectorExpr omega = angular_velocity(b);
+  std::array<VectorExpr, 3> g;
+  for (std::size_t i = 0; i < 3; ++i) {
+    g[i] = simplified(diff(omega, coordinates()[bodies[b].chart->coordinates[i]].rate));
+  }
+  return g;
+}
+
+std::array<VectorExpr, 3> System::dual_euler_basis(std::size_t b) const {
+  const std::array<VectorExpr, 3> g = euler_basis(b);
+  const Expr volume = simplify(dot(g[0], cross(g[1], g[2])));
+  std::array<VectorExpr, 3> dual;
+  for (std::size_t i = 0; i < 3; ++i) {
+    dual[i] = simplified(cross(g[(i + 1) % 3], g[(i + 2) % 3]) / volume);
+  }
+  return dual;
 }
 
 VectorExpr System::material_point(std::size_t b, const VectorExpr& X) const {

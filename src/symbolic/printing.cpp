@@ -1,6 +1,7 @@
 // Simplification for display and printing.
 #include "unidyn/symbolic/printing.hpp"
 
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -28,6 +29,48 @@ Expr reduce_modulo_unit_circle(const Expr& p, const GiNaC::symbol& v, const GiNa
                  .expand();
   }
   return result;
+}
+
+// A fixed remainder of p modulo s² + c² − 1 for every trigonometric argument (the sines' squares
+// eliminated): polynomials in the sines and cosines that are equal get one form.
+Expr canonical_trig_form(const Expr& p) {
+  const std::vector<Expr> arguments = trig_arguments(p);
+  GiNaC::exmap to_symbols, back;
+  std::vector<std::pair<GiNaC::symbol, GiNaC::symbol>> sc;
+  for (const Expr& x : arguments) {
+    sc.emplace_back();
+    to_symbols[GiNaC::sin(x)] = sc.back().first;
+    to_symbols[GiNaC::cos(x)] = sc.back().second;
+    back[sc.back().first] = GiNaC::sin(x);
+    back[sc.back().second] = GiNaC::cos(x);
+  }
+  Expr reduced = p.subs(to_symbols).expand();
+  for (const auto& [sine, cosine] : sc) reduced = reduce_modulo_unit_circle(reduced, sine, cosine);
+  return reduced.subs(back).expand();
+}
+
+// Replaces each radical b^(p/q) by r^p with one symbol r = b^(1/q) per base in its canonical form
+// (so √u and 1/√u of one u, written two ways, become r and 1/r), recording r → b^(1/q) in `back`:
+// the reduction modulo s² + c² − 1 then sees polynomials.
+Expr hide_radicals(const Expr& e, GiNaC::exmap& back) {
+  GiNaC::exset found;
+  e.find(GiNaC::pow(GiNaC::wild(0), GiNaC::wild(1)), found);
+  std::map<Expr, GiNaC::symbol, GiNaC::ex_is_less> roots;
+  GiNaC::exmap hide;
+  for (const Expr& power : found) {
+    const Expr exponent = power.op(1);
+    if (!exponent.info(GiNaC::info_flags::rational) || exponent.info(GiNaC::info_flags::integer))
+      continue;
+    const GiNaC::numeric r = GiNaC::ex_to<GiNaC::numeric>(exponent);
+    const Expr root = GiNaC::pow(canonical_trig_form(power.op(0)), GiNaC::numeric(1) / r.denom());
+    auto it = roots.find(root);
+    if (it == roots.end()) {
+      it = roots.emplace(root, GiNaC::symbol()).first;
+      back[it->second] = root;
+    }
+    hide[power] = GiNaC::pow(it->second, r.numer());
+  }
+  return hide.empty() ? e : e.subs(hide);
 }
 
 // Simplifies what sits inside: function arguments and the bases of non-integer powers (so that
@@ -63,8 +106,10 @@ Expr simplify(const Expr& e) {
   // polynomials in the s and c; reduced modulo s² + c² − 1 in s or in c they take a unique form,
   // so an expression that is zero becomes 0 whatever order GiNaC keeps its terms in. Each argument
   // is reduced both ways (every combination for up to four arguments) and the smallest kept.
+  GiNaC::exmap radicals;
+  best = hide_radicals(best, radicals);
   const std::vector<Expr> arguments = trig_arguments(best);
-  if (arguments.empty()) return best;
+  if (arguments.empty()) return best.subs(radicals);
   std::vector<GiNaC::symbol> s, c;
   GiNaC::exmap to_symbols, back;
   for (const Expr& x : arguments) {
@@ -93,7 +138,7 @@ Expr simplify(const Expr& e) {
       if (expression_size(candidate) < expression_size(best)) best = candidate;
     }
   }
-  return best;
+  return best.subs(radicals);
 }
 
 Expr collect_in(const Expr& e, const std::vector<Expr>& symbols) {

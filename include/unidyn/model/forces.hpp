@@ -8,10 +8,12 @@
 
 namespace unidyn {
 
-// A point a force element acts at or between: a particle, or a point r(q, t) of no mass.
+// A point a force element acts at or between: a particle, a material point of a body (the force
+// then acts on the body there, with its moment about x̄), or a fixed point.
 struct ForcePoint {
   std::optional<std::size_t> particle;
   VectorExpr position;
+  std::optional<std::size_t> body;
 };
 
 // An empty element of a kind.
@@ -46,6 +48,12 @@ ForceElement body_moment(std::size_t body, const VectorExpr& moment);
 //   M = (3 G M/R³) c × J c                                             about x̄
 ForceElement gravity_gradient(const System& system, std::size_t body, const Expr& GM,
                               const VectorExpr& attractor);
+
+// A torsion spring on one Euler angle γ^i of body B (Ex. 8.6): U = ½ K (γ^i − γ0)², and by (8.27)
+// the conservative moment M = −∂U/∂γ^i g^i = −K (γ^i − γ0) g^i along the dual Euler basis vector,
+// not along the angle's axis. `angle` is the index 0..2 in the body's Euler chart.
+ForceElement torsion_spring(const System& system, std::size_t body, int angle, const Expr& K,
+                            const Expr& rest_angle);
 
 // A potential energy U(q, t) given directly in the coordinates.
 ForceElement coordinate_potential(const Expr& U);

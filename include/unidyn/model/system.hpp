@@ -78,7 +78,8 @@ struct ForceElement {
     potential,
     gravitation,
     moment,
-    gravity_gradient
+    gravity_gradient,
+    torsion_spring
   };
   Kind kind;
   std::string label;
@@ -174,6 +175,11 @@ struct System {
   VectorExpr body_basis_vector(std::size_t b, int k) const;
   VectorExpr center_velocity(std::size_t b) const;
   VectorExpr angular_momentum(std::size_t b) const;
+  // (6.30)–(6.31) The Euler basis g_i = ∂ω/∂γ̇^i of a body with an Euler chart, and its dual
+  // basis g^i (g^i · g_k = δ^i_k): g^1 = g_2 × g_3 / [g_1, g_2, g_3] and cyclic. Singular at
+  // gimbal lock, where [g_1, g_2, g_3] = 0.
+  std::array<VectorExpr, 3> euler_basis(std::size_t b) const;
+  std::array<VectorExpr, 3> dual_euler_basis(std::size_t b) const;
   // The material point X = X_k e_k from the centre: x̄ + Q X.
   VectorExpr material_point(std::size_t b, const VectorExpr& X) const;
   // Total potential energy U of the conservative elements.

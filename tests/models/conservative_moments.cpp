@@ -1,0 +1,86 @@
+// Conservative forces and moments on bodies (§8.7, (8.27)): a torsion spring's moment along the
+// dual Euler basis (Ex. 8.6), and a spring at a body point (Ex. 8.8) whose force and moment π_A × F
+// equal −∂U/∂x̄ and −Σ ∂U/∂γ^i g^i with g^i from the rotation layer's dual Euler basis.
+#include <cmath>
+
+#include "support/model_run.hpp"
+#include "unidyn/rotation/euler_angles.hpp"
+
+namespace unidyn {
+namespace {
+
+// Numbers of an expression at a state.
+struct State {
+  GiNaC::exmap values;
+  double operator()(const Expr& e) const {
+    return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(values))).to_double();
+  }
+};
+
+const ForceElement& element_of(const System& system, ForceElement::Kind kind) {
+  for (const auto& f : system.forces) {
+    if (f.kind == kind) return f;
+  }
+  throw std::runtime_error("no such element");
+}
+
+// Ex. 8.6(e): M_con = −K ψ g^1 = −K ψ (cot θ (cos ψ E2 − sin ψ E1) + E3) for 3-1-3 angles.
+TEST(ConservativeMoments, TorsionSpringMomentAlongTheDualEulerBasis) {
+  const System system = load_model(test::model_path("top-torsion-spring"));
+  const ForceElement& spring = element_of(system, ForceElement::Kind::torsion_spring);
+  ASSERT_EQ(spring.moments.size(), 1u);
+  const double K = 0.02, psi = 0.7, theta = 0.4, phi = -1.2;
+  State at{system.parameter_values()};
+  at.values[system.coordinates()[0].value] = psi;
+  at.values[system.coordinates()[1].value] = theta;
+  at.values[system.coordinates()[2].value] = phi;
+  const double expected[3] = {K * psi * std::sin(psi) / std::tan(theta),
+                              -K * psi * std::cos(psi) / std::tan(theta), -K * psi};
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(at(spring.moments[0].moment[i]), expected[i], 1e-15);
+  EXPECT_NEAR(at(spring.potential), K * psi * psi / 2, 1e-16);
+}
+
+TEST(ConservativeMoments, TorsionSpringTopKeepsEnergyAndSpin) {
+  const test::ModelRun run = test::run_model("top-torsion-spring");
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  EXPECT_LT(run.summary.energy_relative_drift, 1e-11);
+  ASSERT_EQ(run.summary.conserved_drift.size(), 1u);
+  EXPECT_LT(run.summary.conserved_drift[0].max_change, 1e-12);
+}
+
+// Ex. 8.8(c): the spring force at A and its moment π_A × F against (8.27).
+TEST(ConservativeMoments, SpringAtABodyPointIsEquation827) {
+  const System system = load_model(test::model_path("body-on-spring"));
+  const ForceElement& spring = element_of(system, ForceElement::Kind::spring);
+  ASSERT_EQ(spring.body_forces.size(), 1u);
+  const auto& q = system.coordinates();
+  State at{system.parameter_values()};
+  const double x[6] = {0.1, -0.2, -0.4, 0.5, 0.9, -0.3};
+  for (std::size_t i = 0; i < 6; ++i) at.values[q[i].value] = x[i];
+  const BodyForce& f = spring.body_forces[0];
+  const VectorExpr arm = f.point - system.bodies[0].center;
+  const VectorExpr moment = cross(arm, f.force);
+  const Tensor dual = dual_euler_basis(*EulerSet::parse("3-1-3"), Vec3(x[3], x[4], x[5]));
+  for (int i = 0; i < 3; ++i) {
+    // F_con = −∂U/∂x̄ (the centre is [x1, x2, x3])
+    EXPECT_NEAR(at(f.force[i]), -at(spring.potential.diff(q[static_cast<std::size_t>(i)].value)),
+                1e-12);
+    // M_con = −Σ ∂U/∂γ^k g^k
+    double expected = 0;
+    for (int k = 0; k < 3; ++k) {
+      expected -= at(spring.potential.diff(q[static_cast<std::size_t>(3 + k)].value)) * dual(i, k);
+    }
+    EXPECT_NEAR(at(moment[i]), expected, 1e-12);
+  }
+}
+
+TEST(ConservativeMoments, BodyOnSpringKeepsEnergyAndAngularMomentum) {
+  const test::ModelRun run = test::run_model("body-on-spring");
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  EXPECT_LT(run.summary.energy_relative_drift, 1e-11);
+  ASSERT_EQ(run.summary.conserved_drift.size(), 1u);
+  EXPECT_LT(run.summary.conserved_drift[0].max_change, 1e-12);
+}
+
+}  // namespace
+}  // namespace unidyn
