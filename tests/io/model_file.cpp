@@ -763,3 +763,47 @@ TEST(ModelFileErrors, HostileInput) {
 
 }  // namespace
 }  // namespace unidyn
+
+namespace unidyn {
+namespace {
+
+// Joints and loads on bodies: what they name must exist, axes are numbers, points on a body are
+// constant on its basis, a moving point of no mass carries no force.
+TEST(ModelFileErrors, BodyJointsAndLoads) {
+  const std::string body =
+      yaml({"unidyn: 1", "parameters: {m: 1, K: 2}", "coordinates: [x, a, b, c]", "bodies:",
+            "  B: {mass: m, inertia: [1, 2, 3], rotation: {euler: 3-1-3, "
+            "angles: [a, b, c]}, center: [x, 0, 0]}"});
+  const auto constraint = [&](const std::string& line) {
+    return body + "constraints:\n" + line + "\n";
+  };
+  const auto force = [&](const std::string& line) { return body + "forces:\n" + line + "\n"; };
+  const std::string unknown = "  - {name: j, pin: {body: C, axis: [0, 0, 1]}}";
+  expect_error(constraint(unknown), 7, column_of(unknown, "C,"), {"body: must name a body"});
+  const std::string symbolic = "  - {name: j, pin: {body: B, axis: [0, 0, m]}}";
+  expect_error(constraint(symbolic), 7, column_of(symbolic, "[0"), {"vector of numbers"});
+  const std::string zero = "  - {name: j, pin: {body: B, axis: [0, 0, 0]}}";
+  expect_error(constraint(zero), 7, column_of(zero, "[0"), {"cannot be zero"});
+  const std::string twice = "  - {name: j, ball: {body: B, to: B}}";
+  expect_error(constraint(twice), 7, column_of(twice, "{body"), {"two different bodies"});
+  const std::string moving = "  - {name: j, ball: {body: B, point: [x, 0, 0]}}";
+  expect_error(constraint(moving), 7, column_of(moving, "[x"), {"constant on its basis"});
+  const std::string no_axis = "  - {name: j, pin: {body: B}}";
+  expect_error(constraint(no_axis), 7, column_of(no_axis, "{body"), {"needs axis:"});
+  const std::string both = "  - {name: j, ball: {body: B}, position: x}";
+  expect_error(constraint(both), 7, 5, {"exactly one of"});
+  const std::string clash = "  - {name: j, ball: {body: B}}\n  - {name: j_1, position: x}";
+  expect_error(constraint(clash), 8, column_of("  - {name: j_1, position: x}", "j_1"),
+               {"already defined"});
+  const std::string free_point = "  - spring: {from: [x, 0, 1], to: [0, 0, 0], stiffness: K}";
+  expect_error(force(free_point), 7, column_of(free_point, "[x"), {"neither a particle nor"});
+  const std::string no_body = "  - spring: {from: {on: C}, to: [0, 0, 0], stiffness: K}";
+  expect_error(force(no_body), 7, column_of(no_body, "C}"), {"on: must name a body"});
+  const std::string not_angle = "  - torsion_spring: {on: B, angle: x, stiffness: K}";
+  expect_error(force(not_angle), 7, column_of(not_angle, "x,"), {"one of the body's Euler"});
+  const std::string gradient = "  - gravity_gradient: {on: B}";
+  expect_error(force(gradient), 7, column_of(gradient, "{on"), {"GM:"});
+}
+
+}  // namespace
+}  // namespace unidyn
