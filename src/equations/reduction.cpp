@@ -20,6 +20,25 @@ std::optional<std::size_t> solvable_coordinate(const System& system, const Expr&
   return std::nullopt;
 }
 
+// A body's centre and rotation with coordinate k substituted; its Euler chart loses the angle
+// (no chart) or follows the renumbering of the coordinates after k.
+void substitute_body(Body& body, const GiNaC::exmap& map, std::size_t k) {
+  body.center = subs(body.center, map);
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned j = 0; j < 3; ++j) body.rotation(i, j) = body.rotation(i, j).subs(map);
+  }
+  if (!body.chart) return;
+  for (const std::size_t angle : body.chart->coordinates) {
+    if (angle == k) {
+      body.chart.reset();
+      return;
+    }
+  }
+  for (std::size_t& angle : body.chart->coordinates) {
+    if (angle > k) --angle;
+  }
+}
+
 }  // namespace
 
 Reduction eliminate_constraints(const System& full) {
@@ -46,12 +65,24 @@ Reduction eliminate_constraints(const System& full) {
       System reduced = system;
       reduced.configuration = system.configuration.without(*k);
       for (auto& p : reduced.particles) p.position = subs(p.position, map);
+      for (auto& b : reduced.bodies) substitute_body(b, map, *k);
       for (auto& f : reduced.forces) {
         f.potential = f.potential.subs(map);
         for (auto& pf : f.forces) pf.force = subs(pf.force, map);
+        for (auto& bf : f.body_forces) {
+          bf.point = subs(bf.point, map);
+          bf.force = subs(bf.force, map);
+        }
+        for (auto& m : f.moments) m.moment = subs(m.moment, map);
       }
       reduced.constraints.erase(reduced.constraints.begin() + static_cast<std::ptrdiff_t>(c));
-      for (auto& other : reduced.constraints) other.expression = other.expression.subs(map);
+      for (auto& other : reduced.constraints) {
+        other.expression = other.expression.subs(map);
+        for (auto& load : other.loads) {
+          load.force = subs(load.force, map);
+          load.moment = subs(load.moment, map);
+        }
+      }
       reduced.initial_values.erase(reduced.initial_values.begin() +
                                    static_cast<std::ptrdiff_t>(*k));
       reduced.initial_rates.erase(reduced.initial_rates.begin() + static_cast<std::ptrdiff_t>(*k));
