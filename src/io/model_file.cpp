@@ -563,7 +563,8 @@ void ModelReader::add_unit_norm_constraint(const YAML::Node& node, const std::st
        std::nullopt,
        at(node),
        name,
-       {}});
+       {},
+       true});
 }
 
 // A particle's name, {on: B, point: [X1, X2, X3]} (a material point of body B, components on its
@@ -813,7 +814,7 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
         0,        GiNaC::realsymbol("lambda(" + name + ")", "\\lambda_{\\mathrm{" + name + "}}"),
         false,    std::nullopt,
         at(spec), name,
-        {}};
+        {},       false};
     if (!names.insert(c.name).second || system.find_parameter(c.name) ||
         system.find_coordinate(c.name) || system.find_particle(c.name)) {
       fail(spec["name"] ? spec["name"] : spec, "'" + c.name + "' is already defined");

@@ -62,11 +62,19 @@ std::vector<Expr> constraint_row(const System& system, std::size_t k) {
 ConstraintLoads solve_constraint_loads(const System& system, const std::vector<Expr>& a) {
   const auto n = static_cast<unsigned>(system.coordinates().size());
   const std::vector<Slot> slots = moving_slots(system);
-  if (3 * slots.size() != n) {
+  // A parametrisation constraint (Euler parameters' unit norm) takes the coordinate the
+  // orientation does not: its multiplier ν closes the square system and comes out 0 for a Ψ that
+  // depends on the parameters only through Q.
+  std::vector<std::vector<Expr>> extra;
+  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+    if (system.constraints[k].parametrisation) extra.push_back(constraint_row(system, k));
+  }
+  if (3 * slots.size() + extra.size() != n) {
     throw std::invalid_argument(
         "a constraint's force on a particle or body needs the coordinates to fix the moving "
         "positions and orientations one to one (3 per moving particle, 3 per moving centre, 3 per "
-        "turning body); use P.constraint_force / B.constraint_force (m a - F) instead");
+        "turning body, plus one per unit norm of Euler parameters); use P.constraint_force / "
+        "B.constraint_force (m a - F) instead");
   }
   // Jᵀ x = a with column block s of Jᵀ the partials of slot s
   GiNaC::matrix Jt(n, n), rhs(n, 1), unknowns(n, 1);
@@ -77,6 +85,9 @@ ConstraintLoads solve_constraint_loads(const System& system, const std::vector<E
       for (unsigned k = 0; k < 3; ++k) {
         Jt(i, static_cast<unsigned>(3 * s) + k) = slots[s].partial[i][static_cast<int>(k)];
       }
+    }
+    for (std::size_t e = 0; e < extra.size(); ++e) {
+      Jt(i, static_cast<unsigned>(3 * slots.size() + e)) = extra[e][i];
     }
   }
   GiNaC::matrix x;
@@ -111,10 +122,11 @@ ConstraintLoads solve_constraint_loads(const System& system, const std::vector<E
 
 ConstraintLoads constraint_loads(const System& system, std::size_t k) {
   const Constraint& c = system.constraints.at(k);
-  if (c.loads.empty()) return solve_constraint_loads(system, constraint_row(system, k));
   ConstraintLoads loads{std::vector<VectorExpr>(system.particles.size()),
                         std::vector<VectorExpr>(system.bodies.size()),
                         std::vector<VectorExpr>(system.bodies.size())};
+  if (c.parametrisation) return loads;
+  if (c.loads.empty()) return solve_constraint_loads(system, constraint_row(system, k));
   for (const auto& load : c.loads) {
     loads.body_force[load.body] = load.force;
     loads.body_moment[load.body] = load.moment;

@@ -35,7 +35,8 @@ Constraint row(const std::string& joint, int k, const Expr& psi, const SourcePos
           std::nullopt,
           where,
           joint,
-          {}};
+          {},
+          false};
 }
 
 // Adds (f, h) on the end's body, if it has one.

@@ -56,6 +56,7 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
   for (const auto& o : system.conserved) observation_names_.push_back(o.name);
   for (const auto& c : system.constraints) {
     is_position_.push_back(c.kind == Constraint::Kind::position);
+    redundant_coordinates_ = redundant_coordinates_ || c.parametrisation;
   }
 }
 
@@ -107,11 +108,15 @@ void CompiledSystem::solve(double t, const Eigen::VectorXd& q, const Eigen::Vect
           out + n_ * n_ + n_, Mc, N);
   data.constraint_bias = Eigen::Map<const Eigen::VectorXd>(out + n_ * n_ + n_ + m_ * n_, Mc);
 
-  // M = L Lᵀ: the mass matrix of a well-posed model is positive definite
-  const Eigen::LLT<Eigen::MatrixXd> llt(data.mass_matrix);
   if (!data.mass_matrix.allFinite()) {
     throw std::runtime_error("the mass matrix is not finite at t = " + std::to_string(t));
   }
+  if (redundant_coordinates_) {
+    solve_saddle_point(t, qddot, lambda, data);
+    return;
+  }
+  // M = L Lᵀ: the mass matrix of a well-posed model is positive definite
+  const Eigen::LLT<Eigen::MatrixXd> llt(data.mass_matrix);
   if (llt.info() != Eigen::Success) {
     // M is only semi-definite when coordinates are redundant (the four Euler parameters of a
     // body); the constraints then make the saddle-point system regular.

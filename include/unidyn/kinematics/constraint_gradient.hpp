@@ -20,12 +20,13 @@ struct ConstraintLoads {
 // (a = ∂Ψ/∂q for a position constraint, the coefficients of q̇ for a velocity constraint): the
 // velocity form Σ (g · v + f · v̄ + h · ω) of the constraint. Unique when the coordinates map
 // one-to-one to the moving positions and orientations (3 coordinates per moving particle, 3 per
-// moving centre, 3 per turning body); throws std::invalid_argument otherwise. What does not move
+// moving centre, 3 per turning body, and one per unit norm of Euler parameters, whose row joins the
+// system with a multiplier of its own); throws std::invalid_argument otherwise. What does not move
 // gets 0.
 ConstraintLoads solve_constraint_loads(const System& system, const std::vector<Expr>& a);
 
-// The loads of constraint k: the closed forms a joint gave it (8.23), or solve_constraint_loads of
-// its row.
+// The loads of constraint k: the closed forms a joint gave it (8.23), none for a parametrisation
+// constraint, or solve_constraint_loads of its row.
 ConstraintLoads constraint_loads(const System& system, std::size_t k);
 
 // The particles' part of solve_constraint_loads: g_P = ∂Ψ/∂r_P.

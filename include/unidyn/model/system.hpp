@@ -122,6 +122,9 @@ struct Constraint {
   // The joint this constraint is one row of (its own name when it stands alone), and its loads.
   std::string joint;
   std::vector<ConstraintLoad> loads;
+  // A constraint of the description, not of the motion (the unit norm of a body's Euler
+  // parameters): it exerts no force or moment on anything.
+  bool parametrisation = false;
 };
 
 // A named scalar to report: an extra CSV column, or a quantity the summary checks for drift.

@@ -76,6 +76,9 @@ class CompiledSystem {
   Tape observer_;     // [t, q, q̇, q̈, λ, p] → T, U, outputs, conserved
   std::vector<std::string> observation_names_;
   std::vector<bool> is_position_;
+  // Some coordinates are redundant (Euler parameters): M is semi-definite, whatever round-off
+  // makes of its Cholesky factor, and the saddle-point system is solved instead.
+  bool redundant_coordinates_ = false;
 };
 
 }  // namespace unidyn
