@@ -34,12 +34,18 @@ std::optional<std::size_t> System::find_body(const std::string& wanted) const {
 
 VectorExpr System::angular_velocity(std::size_t b) const {
   const TensorExpr& Q = bodies[b].rotation;
+  if (const auto cached = angular_velocity_cache_.find(b);
+      cached != angular_velocity_cache_.end() && Expr(cached->second.first).is_equal(Q)) {
+    return cached->second.second;
+  }
   TensorExpr Q_rate(3, 3);
   for (unsigned i = 0; i < 3; ++i) {
     for (unsigned k = 0; k < 3; ++k) Q_rate(i, k) = configuration.total_derivative(Q(i, k));
   }
   // ω = axial(Q̇ Qᵀ)
-  return simplified(axial_expr(Q_rate.mul(Q.transpose())));
+  const VectorExpr omega = simplified(axial_expr(Q_rate.mul(Q.transpose())));
+  angular_velocity_cache_.insert_or_assign(b, std::make_pair(Q, omega));
+  return omega;
 }
 
 VectorExpr System::body_angular_velocity(std::size_t b) const {

@@ -191,6 +191,11 @@ struct System {
   Expr kinetic_energy() const;
   // The parameters' values as a substitution (for numeric checks).
   GiNaC::exmap parameter_values() const;
+
+ private:
+  // ω of each body with the rotation it was derived from: the derivation asks for ω many times,
+  // and a copy whose rotation was edited (approach II) derives it anew.
+  mutable std::map<std::size_t, std::pair<TensorExpr, VectorExpr>> angular_velocity_cache_;
 };
 
 }  // namespace unidyn
