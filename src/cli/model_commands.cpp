@@ -97,8 +97,12 @@ int run_derive(const ModelCommands& c) {
     write_lagrange(std::cout, system, lagrange_equations(system), format);
   } else if (c.method == "newton-euler") {
     write_newton(std::cout, system, newton_equations(system), format);
+  } else if (c.method == "second-form") {
+    const EquationsOfMotion eq = lagrange_equations(system);
+    write_second_form(std::cout, system, eq,
+                      lagrange_second_form(system, newton_equations(system), eq), format);
   } else {
-    throw std::invalid_argument("--method must be lagrange or newton-euler");
+    throw std::invalid_argument("--method must be lagrange, second-form or newton-euler");
   }
   return 0;
 }
@@ -269,7 +273,8 @@ const CLI::Validator kPositive(
 void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.derive = app.add_subcommand("derive", "Print a model's equations of motion");
   c.derive->add_option("model", c.model, "MODEL file or bundled model name")->required();
-  c.derive->add_option("--method", c.method, "lagrange | newton-euler")->capture_default_str();
+  c.derive->add_option("--method", c.method, "lagrange | second-form | newton-euler")
+      ->capture_default_str();
   c.derive->add_option("--format", c.format, "text | latex | json")->capture_default_str();
   c.derive->add_flag("--reduced", c.reduced,
                      "approach II: eliminate the constraints that can be solved for a coordinate");

@@ -12,17 +12,32 @@ std::vector<Expr> accelerations(const System& system) {
   return symbols;
 }
 
+// Σ_k λ_k a_k^i: the constraint forces in row i.
+Expr constraint_terms(const System& system, const EquationsOfMotion& eq, std::size_t i) {
+  Expr sum = 0;
+  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+    sum += system.constraints[k].multiplier * eq.constraint_matrix(k, i);
+  }
+  return sum;
+}
+
 // One Lagrange row as (left side Σ M q̈, right side f + Σ λ a).
 std::pair<Expr, Expr> lagrange_row(const System& system, const EquationsOfMotion& eq,
                                    std::size_t i) {
   const auto& q = system.coordinates();
   Expr lhs = 0;
   for (std::size_t j = 0; j < q.size(); ++j) lhs += eq.mass_matrix(i, j) * q[j].acceleration;
-  Expr rhs = eq.forcing[i];
-  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
-    rhs += system.constraints[k].multiplier * eq.constraint_matrix(k, i);
+  return {collect_in(lhs, accelerations(system)),
+          simplify(eq.forcing[i] + constraint_terms(system, eq, i))};
+}
+
+// A vector as "[x, y, z]" in text or LaTeX.
+std::string render_vector(const VectorExpr& v, bool latex) {
+  std::string text = latex ? "\\begin{bmatrix}" : "[";
+  for (int k = 0; k < 3; ++k) {
+    text += (k ? (latex ? " \\\\ " : ", ") : "") + (latex ? to_latex(v[k]) : to_text(v[k]));
   }
-  return {collect_in(lhs, accelerations(system)), simplify(rhs)};
+  return text + (latex ? "\\end{bmatrix}" : "]");
 }
 
 // A JSON string literal.
@@ -114,23 +129,107 @@ void write_lagrange(std::ostream& out, const System& system, const EquationsOfMo
   }
 }
 
+void write_second_form(std::ostream& out, const System& system, const EquationsOfMotion& eq,
+                       const SecondForm& form, EquationFormat format) {
+  const auto& q = system.coordinates();
+  // each moving particle's and body's partial velocities for coordinate A: label, LaTeX, vector
+  struct Partial {
+    std::string label, latex;
+    VectorExpr v;
+  };
+  const auto partials = [&](std::size_t A) {
+    std::vector<Partial> list;
+    const auto add = [&](const std::string& name, const char* member, const std::string& symbol,
+                         const VectorExpr& v) {
+      if (v[0].is_zero() && v[1].is_zero() && v[2].is_zero()) return;
+      list.push_back({name + member, symbol + "_{\\mathrm{" + name + "}}", v});
+    };
+    for (std::size_t p = 0; p < system.particles.size(); ++p) {
+      add(system.particles[p].name, ".velocity", "\\mathbf{v}", form.particle_velocity[A][p]);
+    }
+    for (std::size_t b = 0; b < system.bodies.size(); ++b) {
+      add(system.bodies[b].name, ".velocity", "\\bar{\\mathbf{v}}", form.center_velocity[A][b]);
+      add(system.bodies[b].name, ".omega", "\\boldsymbol{\\omega}", form.angular_velocity[A][b]);
+    }
+    return list;
+  };
+  const auto lhs = [&](std::size_t A) {
+    return collect_in(form.inertia_terms[A], accelerations(system));
+  };
+  const auto rhs = [&](std::size_t A) {
+    return simplify(form.generalized_force[A] + constraint_terms(system, eq, A));
+  };
+  if (format == EquationFormat::json) {
+    out << "{\n  \"name\": " << quoted(system.name) << ",\n  \"method\": \"second-form\",\n";
+    out << "  \"equations\": [";
+    for (std::size_t A = 0; A < q.size(); ++A) {
+      out << (A ? ",\n    " : "\n    ") << "{\"coordinate\": " << quoted(q[A].name)
+          << ", \"partial_velocities\": {";
+      const auto list = partials(A);
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        out << (i ? ", " : "") << quoted(list[i].label) << ": [";
+        for (int k = 0; k < 3; ++k) out << (k ? ", " : "") << quoted(to_text(list[i].v[k]));
+        out << "]";
+      }
+      out << "}, \"inertia_terms\": " << quoted(to_text(lhs(A)))
+          << ", \"generalized_force\": " << quoted(to_text(rhs(A))) << "}";
+    }
+    out << "\n  ]\n}\n";
+    return;
+  }
+  const bool latex = format == EquationFormat::latex;
+  out << (latex ? "% " : "") << system.name
+      << ": Lagrange's equations, second form (10.16): d/dt(dT/du'^A) - dT/du^A = Phi_A"
+      << (system.constraints.empty() ? "" : " + sum_k lambda_k a_k^A")
+      << ", Phi_A = sum F . dv/du'^A + M . domega/du'^A\n";
+  if (latex) out << "\\begin{aligned}\n";
+  for (std::size_t A = 0; A < q.size(); ++A) {
+    for (const Partial& partial : partials(A)) {
+      if (latex) {
+        out << "  \\frac{\\partial " << partial.latex << "}{\\partial " << to_latex(q[A].rate)
+            << "} &= " << render_vector(partial.v, true) << " \\\\\n";
+      } else {
+        out << "  [" << q[A].name << "]  d(" << partial.label << ")/d(" << q[A].name
+            << "') = " << render_vector(partial.v, false) << "\n";
+      }
+    }
+    if (latex) {
+      out << "  " << to_latex(lhs(A)) << " &= " << to_latex(rhs(A)) << " \\\\\n";
+    } else {
+      out << "  [" << q[A].name << "]  " << to_text(lhs(A)) << " = " << to_text(rhs(A)) << "\n";
+    }
+  }
+  if (latex) out << "\\end{aligned}\n";
+}
+
 void write_newton(std::ostream& out, const System& system, const NewtonEquations& newton,
                   EquationFormat format) {
   const char* axes[] = {"E1", "E2", "E3"};
   if (format == EquationFormat::json) {
     out << "{\n  \"name\": " << quoted(system.name) << ",\n  \"method\": \"newton-euler\",\n";
+    // a vector as a JSON array of component strings, after a key
+    const auto field = [&](const char* key, const VectorExpr& v) {
+      out << ", " << quoted(key) << ": [";
+      for (int k = 0; k < 3; ++k) out << (k ? ", " : "") << quoted(to_text(simplify(v[k])));
+      out << "]";
+    };
     out << "  \"particles\": [";
     for (std::size_t p = 0; p < system.particles.size(); ++p) {
       const ParticleBalance& b = newton.particles[p];
-      out << (p ? ",\n    " : "\n    ") << "{\"name\": " << quoted(system.particles[p].name)
-          << ", \"mass_times_acceleration\": [";
-      for (int k = 0; k < 3; ++k) {
-        out << (k ? ", " : "") << quoted(to_text(simplify(b.mass_times_acceleration[k])));
-      }
-      out << "], \"applied_force\": [";
-      for (int k = 0; k < 3; ++k)
-        out << (k ? ", " : "") << quoted(to_text(simplify(b.applied_force[k])));
-      out << "]}";
+      out << (p ? ",\n    " : "\n    ") << "{\"name\": " << quoted(system.particles[p].name);
+      field("mass_times_acceleration", b.mass_times_acceleration);
+      field("applied_force", b.applied_force);
+      out << "}";
+    }
+    out << "\n  ],\n  \"bodies\": [";
+    for (std::size_t i = 0; i < system.bodies.size(); ++i) {
+      const BodyBalance& b = newton.bodies[i];
+      out << (i ? ",\n    " : "\n    ") << "{\"name\": " << quoted(system.bodies[i].name);
+      field("mass_times_acceleration", b.mass_times_acceleration);
+      field("applied_force", b.applied_force);
+      field("momentum_rate", b.momentum_rate);
+      field("applied_moment", b.applied_moment);
+      out << "}";
     }
     out << "\n  ]\n}\n";
     return;

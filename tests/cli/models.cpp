@@ -351,6 +351,26 @@ TEST(CliModels, DeriveJson) {
   EXPECT_TRUE(contains(newton.out, "\"method\": \"newton-euler\"")) << newton.out;
 }
 
+// JSON for bodies: Euler's laws per body, and the second form with its partial velocities.
+TEST(CliModels, DeriveBodiesJson) {
+  const Outcome newton = run("derive compound-pendulum --method newton-euler --format json");
+  ASSERT_EQ(newton.status, 0) << newton.err;
+  EXPECT_TRUE(JsonChecker(newton.out).valid()) << newton.out;
+  EXPECT_TRUE(contains(newton.out, "\"bodies\": [")) << newton.out;
+  EXPECT_TRUE(contains(newton.out, "\"momentum_rate\": [")) << newton.out;
+  const Outcome second = run("derive heavy-top --method second-form --format json");
+  ASSERT_EQ(second.status, 0) << second.err;
+  EXPECT_TRUE(JsonChecker(second.out).valid()) << second.out;
+  EXPECT_TRUE(contains(second.out, "\"top.omega\": [\"0\", \"0\", \"1\"]")) << second.out;
+  const Outcome text = run("derive rate-gyroscope --method second-form");
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_EQ(lines_starting(text.out, "  [alpha]  d(gimbal.omega)/d(alpha') = ").size(), 1u)
+      << text.out;
+  const Outcome bad = run("derive heavy-top --method kane");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_TRUE(contains(bad.err, "second-form")) << bad.err;
+}
+
 // `derive --method newton-euler`: m a = F + R for each component of each particle.
 TEST(CliModels, DeriveNewtonEuler) {
   const Outcome r = run("derive spherical-pendulum --method newton-euler");
