@@ -5,6 +5,7 @@
 
 #include "support/model_run.hpp"
 #include "unidyn/rotation/euler_angles.hpp"
+#include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn {
 namespace {
@@ -80,6 +81,37 @@ TEST(ConservativeMoments, BodyOnSpringKeepsEnergyAndAngularMomentum) {
   EXPECT_LT(run.summary.energy_relative_drift, 1e-11);
   ASSERT_EQ(run.summary.conserved_drift.size(), 1u);
   EXPECT_LT(run.summary.conserved_drift[0].max_change, 1e-12);
+}
+
+// Ex. 8.7 (Ziegler): a constant moment M E3 has no potential. In 3-1-3 angles its generalised
+// forces Φ_i = M E3 · g_i = (M, 0, M cos θ) fail the integrability condition ∂Φ_φ/∂θ = ∂Φ_θ/∂φ,
+// while the torsion spring's −K ψ g^1 passes all of them (it is −∂U/∂γ).
+TEST(ConservativeMoments, ZieglersConstantMomentHasNoPotential) {
+  const System system = parse_model(R"(unidyn: 1
+parameters: {M: 2, K: 3}
+coordinates: [psi, theta, phi]
+bodies:
+  B: {mass: 1, inertia: [1, 2, 3], rotation: {euler: 3-1-3, angles: [psi, theta, phi]}, center: [0, 0, 0]}
+forces:
+  - moment: {on: B, value: M*E3}
+  - torsion_spring: {on: B, angle: psi, stiffness: K}
+)",
+                                    "ziegler.yaml");
+  const auto& q = system.coordinates();
+  const VectorExpr omega = system.angular_velocity(0);
+  // the curl ∂Φ_i/∂γ^j − ∂Φ_j/∂γ^i of each element's generalised forces
+  const auto curl = [&](const VectorExpr& moment, std::size_t i, std::size_t j) {
+    const Expr phi_i = dot(moment, diff(omega, q[i].rate));
+    const Expr phi_j = dot(moment, diff(omega, q[j].rate));
+    return simplify(phi_i.diff(q[j].value) - phi_j.diff(q[i].value));
+  };
+  const VectorExpr ziegler = system.forces[0].moments[0].moment;
+  const VectorExpr spring = system.forces[1].moments[0].moment;
+  const Expr M = system.parameters[0].symbol, theta = q[1].value;
+  EXPECT_TRUE(simplify(curl(ziegler, 2, 1) + M * GiNaC::sin(theta)).is_zero());
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t j = i + 1; j < 3; ++j) EXPECT_TRUE(curl(spring, i, j).is_zero()) << i << j;
+  }
 }
 
 }  // namespace
