@@ -19,6 +19,7 @@
 #include "unidyn/io/csv.hpp"
 #include "unidyn/io/equation_report.hpp"
 #include "unidyn/io/model_file.hpp"
+#include "unidyn/kinematics/integrability.hpp"
 #include "unidyn/numeric/compiled_system.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
@@ -90,11 +91,35 @@ EquationFormat parse_format(const std::string& format) {
   throw std::invalid_argument("--format must be text, latex or json");
 }
 
+// (1.21), (8.18): which velocity constraints are integrable, alone and together.
+void write_integrability(const System& system, EquationFormat format) {
+  const std::string prefix = format == EquationFormat::latex ? "% " : "  ";
+  std::vector<std::size_t> velocity;
+  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+    if (system.constraints[k].kind != Constraint::Kind::velocity) continue;
+    velocity.push_back(k);
+    const Integrability i = constraint_integrability(system, k);
+    fmt::print("{}constraint {} is {}\n", prefix, system.constraints[k].name,
+               i.integrable ? "integrable (Jacobi (1.21))"
+                            : "not integrable: " + i.witness + " = " + to_text(i.value));
+  }
+  if (velocity.size() < 2) return;
+  try {
+    const Integrability i = set_integrability(system, velocity);
+    fmt::print("{}the velocity constraints together are {}\n", prefix,
+               i.integrable ? "integrable (Frobenius (8.18))"
+                            : "not integrable: " + i.witness + " = " + to_text(i.value));
+  } catch (const std::invalid_argument& e) {
+    fmt::print("{}the velocity constraints together: {}\n", prefix, e.what());
+  }
+}
+
 int run_derive(const ModelCommands& c) {
   const System system = command_model(c);
   const EquationFormat format = parse_format(c.format);
   if (c.method == "lagrange") {
     write_lagrange(std::cout, system, lagrange_equations(system), format);
+    if (format != EquationFormat::json) write_integrability(system, format);
   } else if (c.method == "newton-euler") {
     write_newton(std::cout, system, newton_equations(system), format);
   } else if (c.method == "second-form") {

@@ -1,0 +1,103 @@
+// Integrability of velocity constraints: Jacobi's test (1.19)/(1.21) and Frobenius' (8.18), on the
+// book's examples (1.16), Exercises 1.10 and 1.11, and the rolling disk (10.27)–(10.28).
+#include "unidyn/kinematics/integrability.hpp"
+
+#include <gtest/gtest.h>
+
+#include "unidyn/io/model_file.hpp"
+
+namespace unidyn {
+namespace {
+
+// A particle at [x, y, z] with the given constraints.
+System particle_with(const std::string& constraints) {
+  return parse_model(
+      "unidyn: 1\ncoordinates: [x, y, z]\nparticles:\n  P: {mass: 1, position: [x, y, "
+      "z]}\nconstraints:\n" +
+          constraints,
+      "test.yaml");
+}
+
+// (1.16) ẏ − z ẋ = 0: I_c = f · rot f = −1 (the book's worked check).
+TEST(Integrability, SimplestNonIntegrableConstraint) {
+  const System s = particle_with("  - {name: c, velocity: der(y) - z*der(x)}\n");
+  const Integrability result = constraint_integrability(s, 0);
+  EXPECT_FALSE(result.integrable);
+  EXPECT_EQ(result.witness, "I(x, y, z)");
+  EXPECT_TRUE((result.value + 1).is_zero()) << result.value;
+}
+
+// Exercise 1.10: only x ẋ + y ẏ + e(t) = 0 is integrable (a cylinder whose radius changes in time).
+TEST(Integrability, Exercise110) {
+  const System s = particle_with(
+      "  - {name: cylinder, velocity: x*der(x) + y*der(y) + sin(t)}\n"
+      "  - {name: second, velocity: z*der(y) + der(x)}\n"
+      "  - {name: third, velocity: cos(z)*der(y) - sin(z)*der(x)}\n");
+  EXPECT_TRUE(constraint_integrability(s, 0).integrable);
+  EXPECT_FALSE(constraint_integrability(s, 1).integrable);
+  EXPECT_FALSE(constraint_integrability(s, 2).integrable);
+  // a position constraint is integrable by definition
+  const System p = particle_with("  - {name: sphere, position: x^2 + y^2 + z^2 - 1}\n");
+  EXPECT_TRUE(constraint_integrability(p, 0).integrable);
+}
+
+// Exercise 1.11 and (1.23): z ẋ + ẏ + e(t) = 0 is not integrable, but with ż = 0 the pair is (the
+// particle moves on a straight line); any two independent scleronomic constraints on one particle
+// are (1.23), though neither alone is. With a fourth coordinate w, ẏ − z ẋ = 0 and ẇ = 0 are not:
+// the bracket of ∂x + z ∂y and ∂z is ∂y.
+TEST(Integrability, SetsOfConstraints) {
+  const System s = particle_with(
+      "  - {name: first, velocity: z*der(x) + der(y) + cos(t)}\n"
+      "  - {name: level, velocity: der(z)}\n");
+  EXPECT_FALSE(constraint_integrability(s, 0).integrable);
+  EXPECT_TRUE(constraint_integrability(s, 1).integrable);
+  EXPECT_TRUE(set_integrability(s, {0, 1}).integrable);
+  const System t = particle_with(
+      "  - {name: first, velocity: der(y) - z*der(x)}\n"
+      "  - {name: second, velocity: der(z) - x*der(y)}\n");
+  EXPECT_FALSE(constraint_integrability(t, 0).integrable);
+  EXPECT_FALSE(constraint_integrability(t, 1).integrable);
+  EXPECT_TRUE(set_integrability(t, {0, 1}).integrable);
+  const System w = parse_model(
+      "unidyn: 1\ncoordinates: [x, y, z, w]\nparticles:\n  P: {mass: 1, position: [x, y, z]}\n"
+      "  Q: {mass: 1, position: [w, 1, 0]}\nconstraints:\n"
+      "  - {name: first, velocity: der(y) - z*der(x)}\n  - {name: still, velocity: der(w)}\n",
+      "test.yaml");
+  const Integrability pair = set_integrability(w, {0, 1});
+  EXPECT_FALSE(pair.integrable);
+  EXPECT_TRUE(pair.witness.starts_with("a^T S b of first")) << pair.witness;
+  // three independent constraints prescribe the motion: always integrable (§1.7)
+  const System u = particle_with(
+      "  - {name: first, velocity: der(y) - z*der(x)}\n"
+      "  - {name: second, velocity: der(z) - x*der(y)}\n"
+      "  - {name: third, velocity: der(x) + y*der(z)}\n");
+  EXPECT_TRUE(set_integrability(u, {0, 1, 2}).integrable);
+}
+
+// (10.27)–(10.28): the rolling disk's π3 = ẋ3 − R θ̇ cos θ is integrable (Ψ = x3 − R sin θ), π1 is
+// not, and neither is the set π1, π2, π3 (Ex. 8.9).
+TEST(Integrability, RollingDisk) {
+  const System s = parse_model(R"yaml(unidyn: 1
+parameters: {R: 0.5}
+coordinates: [x1, x2, x3, psi, theta, phi]
+bodies:
+  disk:
+    mass: 1
+    inertia: [1, 1, 2]
+    rotation: {euler: 3-1-3, angles: [psi, theta, phi]}
+    center: [x1, x2, x3]
+constraints:
+  - {name: pi1, velocity: "der(x1) + R*der(phi)*cos(psi) + R*der(psi)*cos(theta)*cos(psi) - R*der(theta)*sin(theta)*sin(psi)"}
+  - {name: pi2, velocity: "der(x2) + R*der(phi)*sin(psi) + R*der(psi)*cos(theta)*sin(psi) + R*der(theta)*sin(theta)*cos(psi)"}
+  - {name: pi3, velocity: "der(x3) - R*der(theta)*cos(theta)"}
+)yaml",
+                               "disk.yaml");
+  EXPECT_FALSE(constraint_integrability(s, 0).integrable);
+  EXPECT_FALSE(constraint_integrability(s, 1).integrable);
+  EXPECT_TRUE(constraint_integrability(s, 2).integrable);
+  EXPECT_FALSE(set_integrability(s, {0, 1, 2}).integrable);
+  EXPECT_TRUE(set_integrability(s, {2}).integrable);
+}
+
+}  // namespace
+}  // namespace unidyn

@@ -1,0 +1,61 @@
+// The rolling disk (§10.7, (10.25)–(10.36)): energy, the contact force and moment M_c = π_P × F_c,
+// Euler's laws with the multipliers, integrability (Ex. 8.9), and its steady motions.
+#include <cmath>
+
+#include "support/model_run.hpp"
+#include "unidyn/kinematics/integrability.hpp"
+
+namespace unidyn {
+namespace {
+
+constexpr double m = 1.0, g = 9.81, R = 0.15, lambda = m * R * R / 4, lambda3 = 2 * lambda;
+
+TEST(RollingDisk, EnergyContactLoadsAndEulersLaws) {
+  const test::ModelRun run = test::run_model("rolling-disk");
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  EXPECT_LT(run.summary.energy_relative_drift, 1e-11);  // E = T + m g x3 (§10.7)
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    EXPECT_LT(run.at(i, "moment_check"), 1e-12);   // M_c = π_P × F_c
+    EXPECT_LT(run.at(i, "newton_euler"), 1e-12);   // m ā − F = F_c, Ḣ − M = M_c
+    EXPECT_LT(run.at(i, "contact_speed"), 1e-11);  // v_P = 0 (10.27)
+    EXPECT_GT(run.at(i, "normal_force"), 0.0);     // the plane pushes
+  }
+}
+
+// Ex. 8.9: the rolling constraints are not integrable; I(x1, ψ, φ) = −R sin ψ = S^1_45.
+TEST(RollingDisk, RollingIsNonholonomic) {
+  const System system = load_model(test::model_path("rolling-disk"));
+  const Integrability pi1 = constraint_integrability(system, 1);
+  ASSERT_FALSE(pi1.integrable);
+  EXPECT_EQ(pi1.witness, "I(x1, psi, phi)");
+  const Expr psi = system.coordinates()[3].value;
+  const Expr Rs = system.parameters[2].symbol;
+  EXPECT_TRUE((pi1.value + Rs * GiNaC::sin(psi)).expand().is_zero()) << pi1.value;
+  EXPECT_TRUE(constraint_integrability(system, 0).integrable);
+  EXPECT_FALSE(set_integrability(system, {1, 2}).integrable);
+}
+
+// Steady motion: θ = θ0, ψ̇ = Ω and s = φ̇ + ψ̇ cos θ constant satisfy (10.35)–(10.36) when (by hand
+// from the θ equation with μ1, μ2 = m ẍ1, m ẍ2 of the centre's circle)
+//   (λ3 + m R²) s Ω sin θ0 − λ Ω² sin θ0 cos θ0 + m g R cos θ0 = 0.
+TEST(RollingDisk, SteadyCircularRolling) {
+  const double theta0 = 1.2, Omega = 6.0;
+  const double s = (lambda * Omega * Omega * std::sin(theta0) * std::cos(theta0) -
+                    m * g * R * std::cos(theta0)) /
+                   ((lambda3 + m * R * R) * Omega * std::sin(theta0));
+  const test::ModelRun run = test::run_model("rolling-disk",
+                                             {{"theta", theta0},
+                                              {"x3", R * std::sin(theta0)},
+                                              {"der(psi)", Omega},
+                                              {"der(phi)", s - Omega * std::cos(theta0)},
+                                              {"der(x1)", -R * s}},
+                                             [](SimulationOptions& o) { o.t_end = 2.0; });
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    EXPECT_NEAR(run.at(i, "theta"), theta0, 1e-9) << run.at(i, "t");
+    EXPECT_NEAR(run.at(i, "der(psi)"), Omega, 1e-8) << run.at(i, "t");
+  }
+}
+
+}  // namespace
+}  // namespace unidyn
