@@ -1,0 +1,47 @@
+// A uniform sphere rolling without slipping: down an incline (§9.8, (9.26)) and on a turntable
+// (Exercise 9.10, (9.33)–(9.34)), described by its centre and Euler parameters with the rolling
+// constraints v_P = 0 or v_P = Ω E3 × x̄ as velocity constraints.
+#include <cmath>
+#include <complex>
+
+#include "support/model_run.hpp"
+
+namespace unidyn {
+namespace {
+
+// (9.26): ẍ1 = (5/7) g sin β from rest, ω = ẋ1/R E2; the plane's friction −(2/7) m g sin β E1 and
+// normal force m g cos β E3 from the multipliers (8.22); energy conserved.
+TEST(RollingSphere, InclineClosedForm) {
+  const test::ModelRun run = test::run_model("sphere-incline");
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const double m = 1, g = 9.81, R = 0.1, beta = 0.3, a = 5.0 / 7.0 * g * std::sin(beta);
+  for (std::size_t i = 0; i < run.rows.size(); i += 10) {
+    const double t = run.at(i, "t");
+    EXPECT_NEAR(run.at(i, "x1"), a * t * t / 2, 1e-9) << t;
+    EXPECT_NEAR(run.at(i, "x2"), 0.0, 1e-12) << t;
+    EXPECT_NEAR(run.at(i, "w2"), a * t / R, 1e-8) << t;
+    EXPECT_NEAR(run.at(i, "friction"), -2.0 / 7.0 * m * g * std::sin(beta), 1e-9) << t;
+    EXPECT_NEAR(run.at(i, "normal"), m * g * std::cos(beta), 1e-9) << t;
+  }
+  EXPECT_LT(run.summary.energy_relative_drift, 1e-11);
+}
+
+// Exercise 9.10: ẍ1 = −(2/7) Ω ẋ2, ẍ2 = (2/7) Ω ẋ1, so ẋ1 + i ẋ2 = v0 e^{i κ t} and
+// x1 + i x2 = z0 + v0 (e^{i κ t} − 1)/(i κ) with κ = 2Ω/7: the centre circles at 2Ω/7.
+TEST(RollingSphere, TurntableCirclesAtTwoSeventhsOmega) {
+  const test::ModelRun run = test::run_model("sphere-turntable");
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const double Omega = 2.0, kappa = 2 * Omega / 7;
+  const std::complex<double> z0(0.3, 0.0), v0(0.0, 0.1), i(0.0, 1.0);
+  for (std::size_t row = 0; row < run.rows.size(); row += 50) {
+    const double t = run.at(row, "t");
+    const std::complex<double> z = z0 + v0 * (std::exp(i * kappa * t) - 1.0) / (i * kappa);
+    EXPECT_NEAR(run.at(row, "x1"), z.real(), 1e-9) << t;
+    EXPECT_NEAR(run.at(row, "x2"), z.imag(), 1e-9) << t;
+    EXPECT_NEAR(run.at(row, "x3"), 0.1, 1e-12) << t;
+  }
+  EXPECT_LT(run.summary.max_velocity_residual, 1e-10);
+}
+
+}  // namespace
+}  // namespace unidyn
