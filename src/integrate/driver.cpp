@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <exception>
+#include <optional>
 #include <stdexcept>
 
 #include "format.hpp"
@@ -41,6 +42,48 @@ class OutputGrid {
   bool done_ = false;
 };
 
+// The earliest event in the last step [t_previous, t] of the stepper: the index of a g_i that went
+// from > 0 to ≤ 0, and where (the ≤ 0 end of a bracket narrowed by the Illinois method on the dense
+// output), or none.
+struct Crossing {
+  std::size_t which;
+  double t;
+};
+std::optional<Crossing> earliest_crossing(const Stepper& stepper, const IntegrationCallbacks& cb,
+                                          const Eigen::VectorXd& g_before,
+                                          const Eigen::VectorXd& g_after) {
+  std::optional<Crossing> first;
+  Eigen::VectorXd y, g;
+  const double tolerance = kEventTimeTolerance * std::max(1.0, std::abs(stepper.t()));
+  for (Eigen::Index i = 0; i < g_after.size(); ++i) {
+    if (!(g_before[i] > 0.0 && g_after[i] <= 0.0)) continue;
+    double ta = stepper.t_previous(), tb = stepper.t(), ga = g_before[i], gb = g_after[i];
+    int kept_side = 0;  // Illinois: halve the value at an end kept twice in a row
+    for (int iteration = 0; iteration < 200 && std::abs(tb - ta) > tolerance; ++iteration) {
+      double tm = tb - gb * (tb - ta) / (gb - ga);
+      if (!(tm > std::min(ta, tb) && tm < std::max(ta, tb))) tm = (ta + tb) / 2;
+      stepper.dense(tm, y);
+      cb.events(tm, y, g);
+      if (g[i] > 0.0) {
+        ta = tm;
+        ga = g[i];
+        if (kept_side == 1) gb /= 2;
+        kept_side = 1;
+      } else {
+        tb = tm;
+        gb = g[i];
+        if (kept_side == -1) ga /= 2;
+        kept_side = -1;
+      }
+    }
+    const bool forward = stepper.t() > stepper.t_previous();
+    if (!first || (forward ? tb < first->t : tb > first->t)) {
+      first = Crossing{static_cast<std::size_t>(i), tb};
+    }
+  }
+  return first;
+}
+
 }  // namespace
 
 IntegrationResult integrate(Stepper& stepper, double t0, const Eigen::VectorXd& y0, double t_end,
@@ -67,9 +110,33 @@ IntegrationResult integrate(Stepper& stepper, double t0, const Eigen::VectorXd& 
 
   // The first row, then step by step: rows inside each step, the hook, the row at its end.
   emit(t0, y0);
+  const bool with_events = callbacks.events && callbacks.on_event;
+  Eigen::VectorXd g_before, g_after;
   try {
+    if (with_events) callbacks.events(t0, y0, g_before);
     while (stepper.t() != t_end) {
       stepper.step(t_end);
+      if (with_events) {
+        callbacks.events(stepper.t(), stepper.y(), g_after);
+        if (const auto event = earliest_crossing(stepper, callbacks, g_before, g_after)) {
+          // rows before the event, the state there, the handler, and a new start (or the end)
+          while (grid.reached(event->t) && grid.next() != event->t) {
+            stepper.dense(grid.next(), row);
+            emit(grid.next(), row);
+          }
+          hooked = stepper.dense(event->t);
+          if (callbacks.post_step) callbacks.post_step(event->t, hooked);
+          const bool go_on = callbacks.on_event(event->t, hooked, event->which);
+          if (grid.reached(event->t)) emit(event->t, hooked);
+          stepper.restart_at(event->t, hooked);
+          if (!go_on) {
+            result.stopped = true;
+            break;
+          }
+          callbacks.events(event->t, hooked, g_before);
+          continue;
+        }
+      }
       while (grid.reached(stepper.t()) && grid.next() != stepper.t()) {
         stepper.dense(grid.next(), row);
         emit(grid.next(), row);
@@ -82,6 +149,7 @@ IntegrationResult integrate(Stepper& stepper, double t0, const Eigen::VectorXd& 
         }
       }
       if (grid.reached(stepper.t())) emit(stepper.t(), stepper.y());
+      if (with_events) callbacks.events(stepper.t(), stepper.y(), g_before);
     }
   } catch (const IntegrationError& error) {
     if (in_output) throw;

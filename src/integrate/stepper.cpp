@@ -26,6 +26,12 @@ void Stepper::initialize(double t0, const Eigen::VectorXd& y0) {
   restart();
 }
 
+void Stepper::restart_at(double t, const Eigen::VectorXd& y) {
+  const StepperStats kept = stats_;
+  initialize(t, y);
+  stats_ = kept;
+}
+
 void Stepper::step(double t_limit) {
   if (!initialized_) throw std::logic_error(describe("step() before initialize()"));
   if (!std::isfinite(t_limit)) throw std::logic_error(describe("step limit is not finite"));

@@ -1,6 +1,7 @@
 // Compiled equations of motion and the solution for q̈ and λ.
 #include "unidyn/numeric/compiled_system.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace unidyn {
@@ -111,8 +112,28 @@ void CompiledSystem::solve(double t, const Eigen::VectorXd& q, const Eigen::Vect
   if (!data.mass_matrix.allFinite()) {
     throw std::runtime_error("the mass matrix is not finite at t = " + std::to_string(t));
   }
+  // only the active constraints take part; an inactive one's λ is 0
+  if (data.active.empty() ||
+      std::find(data.active.begin(), data.active.end(), false) == data.active.end()) {
+    solve_with(t, data.constraint_matrix, data.constraint_bias, qddot, lambda, data);
+    return;
+  }
+  std::vector<Eigen::Index> rows;
+  for (std::size_t k = 0; k < m_; ++k) {
+    if (data.active[k]) rows.push_back(static_cast<Eigen::Index>(k));
+  }
+  Eigen::VectorXd active_lambda;
+  solve_with(t, data.constraint_matrix(rows, Eigen::all), data.constraint_bias(rows), qddot,
+             active_lambda, data);
+  lambda = Eigen::VectorXd::Zero(Mc);
+  lambda(rows) = active_lambda;
+}
+
+void CompiledSystem::solve_with(double t, const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                                Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
+                                CompiledSystemData& data) const {
   if (redundant_coordinates_) {
-    solve_saddle_point(t, qddot, lambda, data);
+    solve_saddle_point(t, A, b, qddot, lambda, data);
     return;
   }
   // M = L Lᵀ: the mass matrix of a well-posed model is positive definite
@@ -120,38 +141,39 @@ void CompiledSystem::solve(double t, const Eigen::VectorXd& q, const Eigen::Vect
   if (llt.info() != Eigen::Success) {
     // M is only semi-definite when coordinates are redundant (the four Euler parameters of a
     // body); the constraints then make the saddle-point system regular.
-    solve_saddle_point(t, qddot, lambda, data);
+    solve_saddle_point(t, A, b, qddot, lambda, data);
     return;
   }
   qddot = llt.solve(data.forcing);
-  lambda.resize(Mc);
-  if (m_ > 0) {
+  lambda.resize(A.rows());
+  if (A.rows() > 0) {
     // (A M⁻¹ Aᵀ) λ = −b − A M⁻¹ f, then q̈ = M⁻¹ (f + Aᵀ λ)
-    const Eigen::MatrixXd MinvAt = llt.solve(data.constraint_matrix.transpose());
-    const Eigen::MatrixXd schur = data.constraint_matrix * MinvAt;
+    const Eigen::MatrixXd MinvAt = llt.solve(A.transpose());
+    const Eigen::MatrixXd schur = A * MinvAt;
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(schur);
     const double scale = schur.diagonal().cwiseAbs().maxCoeff();
     if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * scale)) {
       throw std::runtime_error("the constraints are dependent at t = " + std::to_string(t) +
                                " (A M⁻¹ Aᵀ is singular)");
     }
-    lambda = ldlt.solve(-data.constraint_bias - data.constraint_matrix * qddot);
+    lambda = ldlt.solve(-b - A * qddot);
     qddot += MinvAt * lambda;
   }
 }
 
-void CompiledSystem::solve_saddle_point(double t, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
-                                        CompiledSystemData& data) const {
-  const auto N = static_cast<Eigen::Index>(n_), Mc = static_cast<Eigen::Index>(m_);
+void CompiledSystem::solve_saddle_point(double t, const Eigen::MatrixXd& A,
+                                        const Eigen::VectorXd& b, Eigen::VectorXd& qddot,
+                                        Eigen::VectorXd& lambda, CompiledSystemData& data) const {
+  const auto N = static_cast<Eigen::Index>(n_), Mc = A.rows();
   // [M  −Aᵀ; A  0] [q̈; λ] = [f; −b]
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(N + Mc, N + Mc);
   K.topLeftCorner(N, N) = data.mass_matrix;
-  K.topRightCorner(N, Mc) = -data.constraint_matrix.transpose();
-  K.bottomLeftCorner(Mc, N) = data.constraint_matrix;
+  K.topRightCorner(N, Mc) = -A.transpose();
+  K.bottomLeftCorner(Mc, N) = A;
   Eigen::VectorXd rhs(N + Mc);
-  rhs << data.forcing, -data.constraint_bias;
+  rhs << data.forcing, -b;
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(K);
-  if (m_ == 0 || !lu.isInvertible()) {
+  if (Mc == 0 || !lu.isInvertible()) {
     throw std::runtime_error("the mass matrix is singular or not positive definite at t = " +
                              std::to_string(t) + " (a singular configuration of the coordinates?)");
   }

@@ -216,3 +216,70 @@ TEST(Driver, RejectsInvalidArguments) {
 
 }  // namespace
 }  // namespace unidyn
+
+namespace unidyn {
+namespace {
+
+// A ball dropped from h bounces with restitution e: impacts at t1 = √(2h/g), then every
+// 2 e^k v1/g later (v1 = g t1). Events y ≤ 0 located on the dense output, which is exact for a
+// parabola, must land on these times to kEventTimeTolerance.
+TEST(DriverEvents, BouncingBallImpactTimes) {
+  const double g = 9.81, h = 1.0, e = 0.8;
+  const OdeFunction ball = [g](double, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
+    dydt.resize(2);
+    dydt << y[1], -g;
+  };
+  DormandPrince54 stepper(ball, tolerances(1e-12, 1e-14));
+  std::vector<double> impacts;
+  IntegrationCallbacks callbacks;
+  callbacks.events = [](double, const Eigen::VectorXd& y, Eigen::VectorXd& values) {
+    values.resize(1);
+    values[0] = y[0];
+  };
+  callbacks.on_event = [&](double t, Eigen::VectorXd& y, std::size_t which) {
+    EXPECT_EQ(which, 0u);
+    impacts.push_back(t);
+    y[0] = 0.0;
+    y[1] = -e * y[1];
+    return true;
+  };
+  const IntegrationResult result = integrate(stepper, 0.0, vector({h, 0.0}), 3.0, 0.01, callbacks);
+  ASSERT_TRUE(result.ok) << result.message;
+  EXPECT_FALSE(result.stopped);
+  const double v1 = std::sqrt(2 * g * h);
+  double expected = v1 / g, speed = v1;
+  ASSERT_GE(impacts.size(), 4u);
+  for (const double t : impacts) {
+    EXPECT_NEAR(t, expected, 1e-12) << "impact at " << expected;
+    speed *= e;
+    expected += 2 * speed / g;
+  }
+}
+
+// An event that stops the run: x = cos t reaches 0 at π/2; the rows stop there.
+TEST(DriverEvents, StopEventEndsTheRunWhereItIsLocated) {
+  DormandPrince54 stepper(test::oscillator(1.0), tolerances(1e-12, 1e-14));
+  std::vector<Row> rows;
+  IntegrationCallbacks callbacks = recorder(rows);
+  callbacks.events = [](double, const Eigen::VectorXd& y, Eigen::VectorXd& values) {
+    values.resize(2);
+    values << y[0], 2.0 + y[1];  // the second never reaches 0
+  };
+  double when = 0;
+  callbacks.on_event = [&](double t, Eigen::VectorXd&, std::size_t which) {
+    EXPECT_EQ(which, 0u);
+    when = t;
+    return false;
+  };
+  const IntegrationResult result =
+      integrate(stepper, 0.0, vector({1.0, 0.0}), 10.0, 0.1, callbacks);
+  ASSERT_TRUE(result.ok) << result.message;
+  EXPECT_TRUE(result.stopped);
+  EXPECT_NEAR(when, std::acos(0.0), 1e-10);
+  EXPECT_EQ(result.t, when);
+  EXPECT_LE(rows.back().t, when);
+  EXPECT_EQ(rows.size(), 16u);  // 0, 0.1, …, 1.5
+}
+
+}  // namespace
+}  // namespace unidyn

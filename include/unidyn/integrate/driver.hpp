@@ -18,7 +18,17 @@ struct IntegrationCallbacks {
   // After each accepted step, with the new state; may modify y (e.g. project it onto a constraint
   // manifold), which then replaces the stepper's state by reset_state().
   std::function<void(double t, Eigen::VectorXd& y)> post_step;
+  // Event functions g(t, y) (g sized by the callee). An event is some g_i going from > 0 to ≤ 0
+  // within a step: it is located on the dense output to within kEventTimeTolerance (the time
+  // returned is on the ≤ 0 side), rows up to it are emitted, and on_event gets the state there,
+  // which it may change (a new phase, an impulse); integration then restarts from it, or stops
+  // there when on_event returns false.
+  std::function<void(double t, const Eigen::VectorXd& y, Eigen::VectorXd& g)> events;
+  std::function<bool(double t, Eigen::VectorXd& y, std::size_t which)> on_event;
 };
+
+// Events are located to this relative accuracy in time (of max(1, |t|)).
+inline constexpr double kEventTimeTolerance = 1e-13;
 
 struct IntegrationResult {
   // false: the integration stopped at t_failure, with the reason in message (both unset when ok).
@@ -30,6 +40,8 @@ struct IntegrationResult {
   Eigen::VectorXd y;
   StepperStats stats;
   std::size_t rows = 0;
+  // on_event asked to stop: the run ended at t before t_end, successfully.
+  bool stopped = false;
 };
 
 // Integrate y' = f(t, y) with stepper from (t0, y0) to t_end (forward or backward). Rows are

@@ -36,6 +36,10 @@ class Stepper {
   Eigen::VectorXd dense(double t) const;
   void dense(double t, Eigen::VectorXd& y_out) const;
 
+  // Continue from a new point (t, y) — after an event changed the state or the equations —
+  // as a new solution, keeping the statistics. Same checks as initialize().
+  void restart_at(double t, const Eigen::VectorXd& y);
+
   // Replace the state at the current time, e.g. after a projection onto a constraint manifold. A
   // cached derivative at the old state (first-same-as-last) is dropped; the dense output of the
   // last step keeps describing the step as it was computed. Throws std::invalid_argument on a size

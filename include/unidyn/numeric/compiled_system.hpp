@@ -29,6 +29,8 @@ struct CompiledSystemData {
   Eigen::VectorXd constraint_bias;
   Eigen::VectorXd constraint_velocity_term;
   Eigen::VectorXd constraint_position;
+  // Which constraints hold now (unilateral contact made or lost); empty: all of them.
+  std::vector<bool> active;
 };
 
 class CompiledSystem {
@@ -64,8 +66,12 @@ class CompiledSystem {
                CompiledSystemData& data) const;
 
  private:
-  // The full (n + m) system when M is only semi-definite.
-  void solve_saddle_point(double t, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
+  // q̈ and λ of M q̈ = f + Aᵀ λ, A q̈ + b = 0 for the given rows A, b (M and f in data).
+  void solve_with(double t, const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                  Eigen::VectorXd& qddot, Eigen::VectorXd& lambda, CompiledSystemData& data) const;
+  // The full (n + rows) system when M is only semi-definite.
+  void solve_saddle_point(double t, const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                          Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
                           CompiledSystemData& data) const;
   void load_state(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                   std::span<const double> parameters, CompiledSystemData& data) const;
