@@ -217,8 +217,8 @@ int run_simulate(const ModelCommands& c) {
   // The summary goes to standard error when the CSV takes standard output.
   std::FILE* out = path == "-" ? stderr : stdout;
   fmt::print(out, "{}: {} from t = 0 to {} ({}), {} rows{}\n", system.name,
-             s.ok ? "simulated" : "FAILED", options.t_end, options.method, s.rows,
-             path == "-" ? "" : " written to " + path);
+             s.ok ? (s.stopped ? "simulated until stop_when" : "simulated") : "FAILED",
+             options.t_end, options.method, s.rows, path == "-" ? "" : " written to " + path);
   if (!s.ok) fmt::print(out, "  stopped at t = {:.10g}: {}\n", s.failure_time, s.message);
   fmt::print(out,
              "  derive + compile {:.3f} s, integrate {:.3f} s; {} steps ({} rejected), {} "
@@ -251,6 +251,8 @@ int run_simulate(const ModelCommands& c) {
     if (d.initial != 0.0) fmt::print(out, " (relative {:.3g})", d.max_change / std::abs(d.initial));
     fmt::print(out, "\n");
   }
+  if (!s.phases.empty()) fmt::print(out, "  phases and events:\n");
+  for (const auto& phase : s.phases) fmt::print(out, "    t = {:.12g}: {}\n", phase.t, phase.what);
   return s.ok ? 0 : 1;
 }
 

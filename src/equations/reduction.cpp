@@ -86,7 +86,7 @@ Reduction eliminate_constraints(const System& full) {
       reduced.initial_values.erase(reduced.initial_values.begin() +
                                    static_cast<std::ptrdiff_t>(*k));
       reduced.initial_rates.erase(reduced.initial_rates.begin() + static_cast<std::ptrdiff_t>(*k));
-      for (auto* outputs : {&reduced.outputs, &reduced.conserved}) {
+      for (auto* outputs : {&reduced.outputs, &reduced.conserved, &reduced.stop_when}) {
         std::vector<Output> kept;
         for (auto& o : *outputs) {
           if (o.expression.has(constraint.multiplier)) {

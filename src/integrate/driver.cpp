@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -60,7 +61,7 @@ std::optional<Crossing> earliest_crossing(const Stepper& stepper, const Integrat
     double ta = stepper.t_previous(), tb = stepper.t(), ga = g_before[i], gb = g_after[i];
     int kept_side = 0;  // Illinois: halve the value at an end kept twice in a row
     for (int iteration = 0; iteration < 200 && std::abs(tb - ta) > tolerance; ++iteration) {
-      double tm = tb - gb * (tb - ta) / (gb - ga);
+      double tm = std::isfinite(ga) ? tb - gb * (tb - ta) / (gb - ga) : (ta + tb) / 2;
       if (!(tm > std::min(ta, tb) && tm < std::max(ta, tb))) tm = (ta + tb) / 2;
       stepper.dense(tm, y);
       cb.events(tm, y, g);
@@ -134,6 +135,13 @@ IntegrationResult integrate(Stepper& stepper, double t0, const Eigen::VectorXd& 
             break;
           }
           callbacks.events(event->t, hooked, g_before);
+          // The handled g_i starts at ≈ 0, on either side: it counts as positive, so that its
+          // next return to ≤ 0 is an event however short the excursion (the search probes
+          // toward the step's start until it finds g_i > 0, or ends there).
+          if (g_before[static_cast<Eigen::Index>(event->which)] <= 0.0) {
+            g_before[static_cast<Eigen::Index>(event->which)] =
+                std::numeric_limits<double>::infinity();
+          }
           continue;
         }
       }

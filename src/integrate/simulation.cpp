@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include "unidyn/integrate/contacts.hpp"
 #include "unidyn/integrate/dormand_prince.hpp"
 #include "unidyn/integrate/driver.hpp"
 #include "unidyn/integrate/rk4.hpp"
@@ -39,15 +40,25 @@ class Projector {
  public:
   Projector(const CompiledSystem& compiled, std::span<const double> parameters)
       : compiled_(compiled), parameters_(parameters), data_(compiled.make_data()) {
-    for (std::size_t k = 0; k < compiled.constraint_count(); ++k) {
-      if (compiled.is_position_constraint()[k])
+    set_active({});
+  }
+
+  // The constraints that hold now (unilateral ones come and go).
+  void set_active(const std::vector<bool>& active) {
+    data_.active = active;
+    position_rows_.clear();
+    velocity_rows_.clear();
+    for (std::size_t k = 0; k < compiled_.constraint_count(); ++k) {
+      if (!active.empty() && !active[k]) continue;
+      if (compiled_.is_position_constraint()[k])
         position_rows_.push_back(static_cast<Eigen::Index>(k));
+      velocity_rows_.push_back(static_cast<Eigen::Index>(k));
     }
   }
 
   // Projects (q, q̇) in place; returns the size of the correction.
   double project(double t, Eigen::VectorXd& q, Eigen::VectorXd& qdot) {
-    if (compiled_.constraint_count() == 0) return 0.0;
+    if (velocity_rows_.empty()) return 0.0;
     double moved = 0.0;
     Eigen::VectorXd qddot, lambda;
     for (int iteration = 0; iteration < 4 && !position_rows_.empty(); ++iteration) {
@@ -60,9 +71,9 @@ class Projector {
       moved = std::max(moved, dq.cwiseAbs().maxCoeff());
     }
     compiled_.constraints(t, q, qdot, parameters_, data_);
-    const Eigen::VectorXd residual =
-        data_.constraint_matrix * qdot + data_.constraint_velocity_term;
-    const Eigen::VectorXd dqdot = correction(t, q, qdot, data_.constraint_matrix, residual);
+    const Eigen::MatrixXd A = data_.constraint_matrix(velocity_rows_, Eigen::all);
+    const Eigen::VectorXd residual = A * qdot + data_.constraint_velocity_term(velocity_rows_);
+    const Eigen::VectorXd dqdot = correction(t, q, qdot, A, residual);
     qdot -= dqdot;
     return std::max(moved, dqdot.cwiseAbs().maxCoeff());
   }
@@ -82,7 +93,7 @@ class Projector {
   const CompiledSystem& compiled_;
   std::span<const double> parameters_;
   CompiledSystemData data_;
-  std::vector<Eigen::Index> position_rows_;
+  std::vector<Eigen::Index> position_rows_, velocity_rows_;
 };
 
 // (§6.8) The Euler-angle charts of the bodies: the closest approach to gimbal lock goes into the
@@ -193,6 +204,7 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
   const std::span<const double> parameters(start.parameters);
   CompiledSystemData data = compiled.make_data();
   Projector projector(compiled, parameters);
+  Contacts contacts(system, compiled, parameters);
   summary.has_energy = has_energy_column(system);
 
   // y = (q, q̇), y' = (q̇, q̈)
@@ -205,8 +217,11 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
 
   std::vector<double> observed(compiled.observation_count());
   std::vector<double> row;
-  const std::size_t outputs_begin = 2;  // after kinetic and potential energy
+  // observed: T, U, the outputs, the conserved quantities, the stop_when expressions
+  const std::size_t outputs_begin = 2;
   const std::size_t n_conserved = system.conserved.size();
+  const std::size_t conserved_begin = outputs_begin + system.outputs.size();
+  const std::size_t stops_begin = conserved_begin + n_conserved;
   std::vector<double> conserved_initial(n_conserved);
   double energy_scale = 0.0, max_energy_error = 0.0;
 
@@ -221,11 +236,11 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     const double T = observed[0], U = observed[1], E = T + U;
     if (summary.has_energy) row.push_back(E);
     row.insert(row.end(), lambda.data(), lambda.data() + lambda.size());
-    row.insert(row.end(), observed.begin() + outputs_begin, observed.end());
+    row.insert(row.end(), observed.begin() + outputs_begin, observed.begin() + stops_begin);
     if (summary.rows == 0) {
       summary.energy_initial = E;
       for (std::size_t c = 0; c < n_conserved; ++c) {
-        conserved_initial[c] = observed[observed.size() - n_conserved + c];
+        conserved_initial[c] = observed[conserved_begin + c];
         summary.conserved_drift.push_back({system.conserved[c].name, conserved_initial[c], 0.0});
       }
     }
@@ -233,37 +248,93 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     max_energy_error = std::max(max_energy_error, std::abs(E - summary.energy_initial));
     for (std::size_t c = 0; c < n_conserved; ++c) {
       const double c0 = conserved_initial[c];
-      const double value = observed[observed.size() - n_conserved + c];
+      const double value = observed[conserved_begin + c];
       summary.conserved_drift[c].max_change =
           std::max(summary.conserved_drift[c].max_change, std::abs(value - c0));
     }
     if (compiled.constraint_count() > 0) {
       compiled.constraints(t, q, qdot, parameters, data);
+      // the constraints that hold (a free unilateral one has Ψ > 0, its rate anything)
+      const Eigen::VectorXd velocity_residual =
+          data.constraint_matrix * qdot + data.constraint_velocity_term;
       for (std::size_t k = 0; k < compiled.constraint_count(); ++k) {
         const auto K = static_cast<Eigen::Index>(k);
+        if (!contacts.active()[k]) continue;
         if (compiled.is_position_constraint()[k]) {
           summary.max_position_residual =
               std::max(summary.max_position_residual, std::abs(data.constraint_position[K]));
         }
+        summary.max_velocity_residual =
+            std::max(summary.max_velocity_residual, std::abs(velocity_residual[K]));
       }
-      const Eigen::VectorXd velocity_residual =
-          data.constraint_matrix * qdot + data.constraint_velocity_term;
-      summary.max_velocity_residual =
-          std::max(summary.max_velocity_residual, velocity_residual.cwiseAbs().maxCoeff());
     }
     ++summary.rows;
     on_row(row);
+  };
+
+  // The phase of the unilateral constraints, in the solver and the projector.
+  const auto use_phase = [&] {
+    data.active = contacts.active();
+    projector.set_active(contacts.active());
+  };
+  // Event functions: the contacts', then each stop_when expression times its sign at the start.
+  std::vector<double> stop_sign(system.stop_when.size(), 1.0);
+  const auto events = [&](double t, const Eigen::VectorXd& y, Eigen::VectorXd& g) {
+    g.resize(static_cast<Eigen::Index>(contacts.event_count() + stop_sign.size()));
+    const Eigen::VectorXd q = y.head(n), qdot = y.tail(n);
+    if (contacts.any()) contacts.events(t, q, qdot, std::span(g.data(), contacts.event_count()));
+    if (stop_sign.empty()) return;
+    compiled.solve(t, q, qdot, parameters, qddot, lambda, data);
+    compiled.observe(t, q, qdot, qddot, lambda, parameters, observed, data);
+    for (std::size_t s = 0; s < stop_sign.size(); ++s) {
+      g[static_cast<Eigen::Index>(contacts.event_count() + s)] =
+          stop_sign[s] * observed[stops_begin + s];
+    }
   };
 
   // Integrate with the projection after every step; rows come through `emit`.
   try {
     const std::unique_ptr<Stepper> stepper = make_stepper(options, rhs);
     Eigen::VectorXd q = start.q, qdot = start.qdot;
+    if (contacts.any()) {
+      // the contacts that hold at the start, then onto their manifolds with the rest
+      projector.set_active(contacts.active());
+      for (auto& line : contacts.start(start.t0, q, qdot)) {
+        summary.phases.push_back({start.t0, std::move(line)});
+      }
+      use_phase();
+    }
     if (options.project) summary.initial_projection = projector.project(start.t0, q, qdot);
     Eigen::VectorXd y0(2 * n);
     y0 << q, qdot;
     IntegrationCallbacks callbacks;
     callbacks.output = emit;
+    if (contacts.any() || !stop_sign.empty()) {
+      Eigen::VectorXd g0;
+      events(start.t0, y0, g0);
+      for (std::size_t s = 0; s < stop_sign.size(); ++s) {
+        const double value = g0[static_cast<Eigen::Index>(contacts.event_count() + s)];
+        if (value == 0.0) {
+          throw std::invalid_argument("stop_when '" + system.stop_when[s].name +
+                                      "' is 0 at the start");
+        }
+        stop_sign[s] = value > 0 ? 1.0 : -1.0;
+      }
+      callbacks.events = events;
+      callbacks.on_event = [&](double t, Eigen::VectorXd& y, std::size_t which) {
+        if (which >= contacts.event_count()) {
+          summary.phases.push_back({t, "stop_when '" +
+                                           system.stop_when[which - contacts.event_count()].name +
+                                           "' reached 0"});
+          return false;
+        }
+        Eigen::VectorXd yq = y.head(n), yv = y.tail(n);
+        summary.phases.push_back({t, contacts.handle(t, yq, yv, which)});
+        use_phase();
+        y << yq, yv;
+        return true;
+      };
+    }
     const bool project = options.project && compiled.constraint_count() > 0;
     callbacks.post_step = [&](double t, Eigen::VectorXd& y) {
       watch_euler_charts(system, t, y, summary);
@@ -275,6 +346,7 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     const IntegrationResult result =
         integrate(*stepper, start.t0, y0, options.t_end, options.output_step, callbacks);
     summary.ok = result.ok;
+    summary.stopped = result.stopped;
     summary.message = result.message;
     summary.failure_time = result.t_failure;
     summary.stats = result.stats;

@@ -274,6 +274,7 @@ class ModelReader {
   void read_simulate(const YAML::Node& node, System& system);
   std::vector<Output> read_outputs(const YAML::Node& node, const System& system,
                                    const std::string& what);
+  void read_stop_when(const YAML::Node& node, System& system);
 
   std::string file_;
   std::string_view source_;
@@ -339,11 +340,11 @@ System ModelReader::read(const YAML::Node& root) {
   if (!root.IsDefined() || root.IsNull())
     throw ModelError({file_, 1, 1}, "the model file is empty");
   expect_map(root, "a model file");
-  expect_keys(
-      root,
-      {"unidyn", "name", "description", "reference", "parameters", "coordinates", "particles",
-       "bodies", "forces", "constraints", "initial", "simulate", "outputs", "conserved"},
-      "the model");
+  expect_keys(root,
+              {"unidyn", "name", "description", "reference", "parameters", "coordinates",
+               "particles", "bodies", "forces", "constraints", "initial", "simulate", "outputs",
+               "conserved", "stop_when"},
+              "the model");
   if (!root["unidyn"]) throw ModelError(at(root), "missing 'unidyn: 1' (the model format version)");
   if (scalar(root["unidyn"], "unidyn") != "1")
     fail(root["unidyn"], "unsupported format version: expected 'unidyn: 1'");
@@ -370,6 +371,7 @@ System ModelReader::read(const YAML::Node& root) {
   for (const auto& c : system.constraints) columns_.insert("lambda(" + c.name + ")");
   if (root["outputs"]) system.outputs = read_outputs(root["outputs"], system, "outputs");
   if (root["conserved"]) system.conserved = read_outputs(root["conserved"], system, "conserved");
+  if (root["stop_when"]) read_stop_when(root["stop_when"], system);
   return system;
 }
 
@@ -564,7 +566,8 @@ void ModelReader::add_unit_norm_constraint(const YAML::Node& node, const std::st
        at(node),
        name,
        {},
-       true});
+       true,
+       0});
 }
 
 // A particle's name, {on: B, point: [X1, X2, X3]} (a material point of body B, components on its
@@ -788,8 +791,10 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
   std::set<std::string> names;
   for (const auto& spec : node) {
     expect_map(spec, "a constraint");
-    expect_keys(spec, {"name", "position", "velocity", "ball", "pin", "unilateral", "friction"},
-                "a constraint");
+    expect_keys(
+        spec,
+        {"name", "position", "velocity", "ball", "pin", "unilateral", "restitution", "friction"},
+        "a constraint");
     if (!!spec["position"] + !!spec["velocity"] + !!spec["ball"] + !!spec["pin"] != 1) {
       fail(spec,
            "a constraint needs exactly one of position: Ψ(q, t), velocity: (linear in der(q)), "
@@ -814,7 +819,8 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
         0,        GiNaC::realsymbol("lambda(" + name + ")", "\\lambda_{\\mathrm{" + name + "}}"),
         false,    std::nullopt,
         at(spec), name,
-        {},       false};
+        {},       false,
+        0};
     if (!names.insert(c.name).second || system.find_parameter(c.name) ||
         system.find_coordinate(c.name) || system.find_particle(c.name)) {
       fail(spec["name"] ? spec["name"] : spec, "'" + c.name + "' is already defined");
@@ -853,6 +859,19 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
         fail(spec["unilateral"], "unilateral must be true or false");
       }
       c.unilateral = flag == "true";
+      if (c.unilateral && c.kind != Constraint::Kind::position) {
+        fail(spec["unilateral"], "only a position constraint Ψ ≥ 0 can be unilateral");
+      }
+    }
+    if (spec["restitution"]) {
+      if (!c.unilateral) fail(spec["restitution"], "restitution: needs unilateral: true");
+      c.restitution = scalar_expr(spec["restitution"], scope, "restitution");
+      expect_state_only(spec["restitution"], c.restitution, system, "a restitution", false);
+      for (const auto& q : system.coordinates()) {
+        if (c.restitution.has(q.value) || c.restitution.has(system.time())) {
+          fail(spec["restitution"], "a restitution is a number or depends on parameters only");
+        }
+      }
     }
     if (spec["friction"]) {
       const YAML::Node& f = spec["friction"];
@@ -882,7 +901,9 @@ void ModelReader::read_joint(const YAML::Node& spec, const std::string& name, Sy
   } else {
     expect_keys(j, {"body", "point", "to", "to_point"}, what);
   }
-  if (spec["unilateral"] || spec["friction"]) fail(spec, "a joint cannot be unilateral or rough");
+  if (spec["unilateral"] || spec["friction"] || spec["restitution"]) {
+    fail(spec, "a joint cannot be unilateral or rough");
+  }
   if (!j["body"]) fail(j, what + " needs body: (and to: another body, or the ground without it)");
   if (pin && !j["axis"]) fail(j, "a pin needs axis: [A1, A2, A3] on the body's basis");
   const SystemScope scope(system);
@@ -998,6 +1019,17 @@ std::vector<Output> ModelReader::read_outputs(const YAML::Node& node, const Syst
     outputs.push_back({name, scalar_expr(item.second, scope, name), at(item.first)});
   }
   return outputs;
+}
+
+// stop_when: [expr, ...]: functions of t, q and der(q) (and of outputs' names: accelerations,
+// multipliers); the run stops when one, non-zero at the start, reaches 0.
+void ModelReader::read_stop_when(const YAML::Node& node, System& system) {
+  if (!node.IsSequence()) fail(node, "stop_when must be a list of expressions, e.g. [z, 2 - t]");
+  const OutputScope scope(system);
+  for (const auto& item : node) {
+    const std::string text = scalar(item, "a stop_when expression");
+    system.stop_when.push_back({text, scalar_expr(item, scope, "stop_when"), at(item)});
+  }
 }
 
 }  // namespace

@@ -36,7 +36,8 @@ Constraint row(const std::string& joint, int k, const Expr& psi, const SourcePos
           where,
           joint,
           {},
-          false};
+          false,
+          0};
 }
 
 // Adds (f, h) on the end's body, if it has one.

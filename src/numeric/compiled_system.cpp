@@ -40,6 +40,7 @@ Tape compile_observer(const System& system, const EquationsOfMotion& eq) {
   std::vector<Expr> outputs{eq.kinetic_energy, eq.potential_energy};
   for (const auto& o : system.outputs) outputs.push_back(o.expression);
   for (const auto& o : system.conserved) outputs.push_back(o.expression);
+  for (const auto& o : system.stop_when) outputs.push_back(o.expression);
   return Tape::compile(outputs, tape_inputs(system, true));
 }
 
@@ -55,6 +56,7 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
   observation_names_ = {"kinetic_energy", "potential_energy"};
   for (const auto& o : system.outputs) observation_names_.push_back(o.name);
   for (const auto& o : system.conserved) observation_names_.push_back(o.name);
+  for (const auto& o : system.stop_when) observation_names_.push_back("stop_when " + o.name);
   for (const auto& c : system.constraints) {
     is_position_.push_back(c.kind == Constraint::Kind::position);
     redundant_coordinates_ = redundant_coordinates_ || c.parametrisation;

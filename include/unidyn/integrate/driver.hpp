@@ -22,7 +22,8 @@ struct IntegrationCallbacks {
   // within a step: it is located on the dense output to within kEventTimeTolerance (the time
   // returned is on the ≤ 0 side), rows up to it are emitted, and on_event gets the state there,
   // which it may change (a new phase, an impulse); integration then restarts from it, or stops
-  // there when on_event returns false.
+  // there when on_event returns false. Just after its event a g_i counts as positive, so that any
+  // return to ≤ 0, however brief the excursion, is the next event.
   std::function<void(double t, const Eigen::VectorXd& y, Eigen::VectorXd& g)> events;
   std::function<bool(double t, Eigen::VectorXd& y, std::size_t which)> on_event;
 };

@@ -60,6 +60,15 @@ struct SimulationSummary {
   double closest_gimbal_lock = 1.0;
   double closest_gimbal_lock_time = 0.0;
   StepperStats stats;
+  // The phases: each contact's state at the start, then every event (contact lost or made, an
+  // impact, a stop_when reached) at its time, in order.
+  struct Phase {
+    double t = 0.0;
+    std::string what;
+  };
+  std::vector<Phase> phases;
+  // stop_when ended the run (successfully) before t_end
+  bool stopped = false;
 };
 
 // A run whose Euler angles come this close to gimbal lock (|[g1, g2, g3]| = |cos γ²| or |sin γ²|)

@@ -125,6 +125,8 @@ struct Constraint {
   // A constraint of the description, not of the motion (the unit norm of a body's Euler
   // parameters): it exerts no force or moment on anything.
   bool parametrisation = false;
+  // A unilateral constraint's coefficient of restitution at impact (§2.10): 0 is plastic.
+  Expr restitution = 0;
 };
 
 // A named scalar to report: an extra CSV column, or a quantity the summary checks for drift.
@@ -158,6 +160,8 @@ struct System {
   SimulationSettings simulate;
   std::vector<Output> outputs;
   std::vector<Output> conserved;
+  // The run stops when one of these, non-zero at the start, reaches 0.
+  std::vector<Output> stop_when;
 
   const std::vector<CoordinateSymbols>& coordinates() const { return configuration.coordinates(); }
   const GiNaC::realsymbol& time() const { return configuration.time(); }

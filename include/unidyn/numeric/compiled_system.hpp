@@ -41,8 +41,8 @@ class CompiledSystem {
   std::size_t constraint_count() const { return m_; }
   std::size_t parameter_count() const { return p_; }
   std::size_t observation_count() const { return observation_names_.size(); }
-  // Names of what observe() returns: kinetic_energy, potential_energy, then the outputs and the
-  // conserved quantities of the model.
+  // Names of what observe() returns: kinetic_energy, potential_energy, then the outputs, the
+  // conserved quantities and the stop_when expressions of the model.
   const std::vector<std::string>& observation_names() const { return observation_names_; }
   // Which constraints are position constraints (the others are velocity constraints).
   const std::vector<bool>& is_position_constraint() const { return is_position_; }

@@ -1,0 +1,157 @@
+// Unilateral constraints: phases, event functions, contact loss and impacts.
+#include "unidyn/integrate/contacts.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "format.hpp"
+
+namespace unidyn {
+
+Contacts::Contacts(const System& system, const CompiledSystem& compiled,
+                   std::span<const double> parameters)
+    : system_(system),
+      compiled_(compiled),
+      parameters_(parameters),
+      data_(compiled.make_data()),
+      active_(system.constraints.size(), true) {
+  GiNaC::exmap values;
+  for (std::size_t p = 0; p < system.parameters.size(); ++p) {
+    values[system.parameters[p].symbol] = parameters[p];
+  }
+  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+    const Constraint& c = system.constraints[k];
+    if (!c.unilateral) continue;
+    unilateral_.push_back(k);
+    const Expr e = GiNaC::evalf(c.restitution.subs(values));
+    const double r =
+        GiNaC::is_a<GiNaC::numeric>(e) ? GiNaC::ex_to<GiNaC::numeric>(e).to_double() : -1.0;
+    if (!(r >= 0.0 && r <= 1.0)) {
+      throw std::invalid_argument("the restitution of '" + c.name + "' must be in [0, 1]");
+    }
+    restitution_.push_back(r);
+  }
+}
+
+std::vector<std::string> Contacts::start(double t, const Eigen::VectorXd& q,
+                                         const Eigen::VectorXd& qdot) {
+  std::vector<std::string> lines;
+  if (unilateral_.empty()) return lines;
+  compiled_.constraints(t, q, qdot, parameters_, data_);
+  const double tolerance = 1e-9 * (1.0 + q.cwiseAbs().maxCoeff());
+  // in contact: Ψ ≈ 0 and not separating
+  for (const std::size_t k : unilateral_) {
+    const auto K = static_cast<Eigen::Index>(k);
+    const double psi = data_.constraint_position[K];
+    const double rate =
+        data_.constraint_matrix.row(K).dot(qdot) + data_.constraint_velocity_term[K];
+    if (psi < -tolerance) {
+      throw std::runtime_error("the unilateral constraint '" + system_.constraints[k].name +
+                               "' is violated at the start (Ψ = " + detail::to_text(psi) + " < 0)");
+    }
+    active_[k] = std::abs(psi) <= tolerance && rate <= tolerance;
+  }
+  // a contact whose force would pull is not one: drop the most negative until all push
+  Eigen::VectorXd qddot, lambda;
+  for (std::size_t round = 0; round < unilateral_.size(); ++round) {
+    data_.active = active_;
+    compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data_);
+    std::size_t worst = system_.constraints.size();
+    for (const std::size_t k : unilateral_) {
+      if (active_[k] && lambda[static_cast<Eigen::Index>(k)] < 0 &&
+          (worst == system_.constraints.size() ||
+           lambda[static_cast<Eigen::Index>(k)] < lambda[static_cast<Eigen::Index>(worst)])) {
+        worst = k;
+      }
+    }
+    if (worst == system_.constraints.size()) break;
+    active_[worst] = false;
+  }
+  for (const std::size_t k : unilateral_) {
+    lines.push_back("'" + system_.constraints[k].name + "' " +
+                    (active_[k] ? "in contact" : "free"));
+  }
+  return lines;
+}
+
+void Contacts::events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                      std::span<double> g) {
+  Eigen::VectorXd qddot, lambda;
+  data_.active = active_;
+  compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data_);
+  compiled_.constraints(t, q, qdot, parameters_, data_);
+  for (std::size_t i = 0; i < unilateral_.size(); ++i) {
+    const auto K = static_cast<Eigen::Index>(unilateral_[i]);
+    g[i] = active_[unilateral_[i]] ? lambda[K] : data_.constraint_position[K];
+  }
+}
+
+std::string Contacts::handle(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot,
+                             std::size_t which) {
+  const std::size_t k = unilateral_.at(which);
+  const std::string name = "'" + system_.constraints[k].name + "'";
+  if (active_[k]) {
+    active_[k] = false;
+    return "contact " + name + " lost (its force reached 0)";
+  }
+  compiled_.constraints(t, q, qdot, parameters_, data_);
+  const auto K = static_cast<Eigen::Index>(k);
+  const double rate = data_.constraint_matrix.row(K).dot(qdot) + data_.constraint_velocity_term[K];
+  const double e = restitution_[which];
+  // rate ≥ 0: back at Ψ = 0 right after leaving it, too soon to resolve — a resting contact
+  if (rate < 0.0 && e * std::abs(rate) > kRestingRebound) {
+    impulse(t, q, qdot, k, -e * rate);
+    return "impact on " + name + ": rate " + detail::to_text(rate) + " -> " +
+           detail::to_text(-e * rate) + " (restitution " + detail::to_text(e) + ")";
+  }
+  impulse(t, q, qdot, k, 0.0);
+  if (try_hold(t, q, qdot, k)) {
+    return "contact " + name + " made (approach rate " + detail::to_text(rate) + ")";
+  }
+  return name + " touched and left";
+}
+
+void Contacts::impulse(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot, std::size_t k,
+                       double target) {
+  // [M  −Aᵀ; A  0] [Δq̇; ν] = [0; Δrate]: rows of the active constraints keep their rates
+  Eigen::VectorXd qddot, lambda;
+  data_.active = active_;
+  compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data_);  // fills M
+  compiled_.constraints(t, q, qdot, parameters_, data_);
+  std::vector<Eigen::Index> rows;
+  for (std::size_t j = 0; j < active_.size(); ++j) {
+    if (active_[j] || j == k) rows.push_back(static_cast<Eigen::Index>(j));
+  }
+  const Eigen::MatrixXd A = data_.constraint_matrix(rows, Eigen::all);
+  const Eigen::Index n = qdot.size(), r = A.rows();
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n + r, n + r);
+  K.topLeftCorner(n, n) = data_.mass_matrix;
+  K.topRightCorner(n, r) = -A.transpose();
+  K.bottomLeftCorner(r, n) = A;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + r);
+  const Eigen::VectorXd rates = A * qdot + data_.constraint_velocity_term(rows);
+  for (Eigen::Index i = 0; i < r; ++i) {
+    rhs[n + i] =
+        (rows[static_cast<std::size_t>(i)] == static_cast<Eigen::Index>(k) ? target : 0.0) -
+        rates[i];
+  }
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(K);
+  if (!lu.isInvertible()) {
+    throw std::runtime_error("the impact on '" + system_.constraints[k].name +
+                             "' cannot be resolved (dependent constraints)");
+  }
+  qdot += lu.solve(rhs).head(n);
+}
+
+bool Contacts::try_hold(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                        std::size_t k) {
+  active_[k] = true;
+  data_.active = active_;
+  Eigen::VectorXd qddot, lambda;
+  compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data_);
+  if (lambda[static_cast<Eigen::Index>(k)] >= 0.0) return true;
+  active_[k] = false;
+  return false;
+}
+
+}  // namespace unidyn

@@ -1,0 +1,88 @@
+// Unilateral constraints and events (§2.6, §2.10, Problem 2.7(i)): a particle leaves a smooth
+// sphere where its normal force reaches 0, then flies free; a ball bounces on a table with
+// restitution e; stop_when ends a run where its expression reaches 0.
+#include <cmath>
+
+#include "support/model_run.hpp"
+
+namespace unidyn {
+namespace {
+
+constexpr double g = 9.81, R0 = 1.0, phi0 = 0.2, w0 = 0.5;
+
+// Problem 2.7(i): N = m g (3 cos φ − 2 cos φ0) − m R0 φ̇0² vanishes at cos φ1 = (2 cos φ0 +
+// R0 φ̇0²/g)/3, reached at t1 = ∫ dφ/φ̇ with φ̇² = φ̇0² + (2g/R0)(cos φ0 − cos φ) (energy).
+TEST(UnilateralContact, ParticleLeavesTheSphereWhereItsForceVanishes) {
+  const test::ModelRun run = test::run_model("particle-leaving-sphere");
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  ASSERT_EQ(run.summary.phases.size(), 3u);
+  EXPECT_EQ(run.summary.phases[0].what, "'surface' in contact");
+  EXPECT_EQ(run.summary.phases[1].what, "contact 'surface' lost (its force reached 0)");
+  const double cos_phi1 = (2 * std::cos(phi0) + R0 * w0 * w0 / g) / 3, phi1 = std::acos(cos_phi1);
+  // t1 by Simpson's rule (the integrand is smooth: φ̇ ≥ w0 on [φ0, φ1])
+  const int intervals = 20000;
+  const double h = (phi1 - phi0) / intervals;
+  const auto inverse_rate = [&](double phi) {
+    return 1 / std::sqrt(w0 * w0 + 2 * g / R0 * (std::cos(phi0) - std::cos(phi)));
+  };
+  double t1 = inverse_rate(phi0) + inverse_rate(phi1);
+  for (int i = 1; i < intervals; ++i) t1 += (i % 2 ? 4 : 2) * inverse_rate(phi0 + i * h);
+  t1 *= h / 3;
+  EXPECT_NEAR(run.summary.phases[1].t, t1, 1e-10);
+  // on the sphere the force pushes; off it λ = 0 and the particle is a projectile
+  std::size_t first_free = 0;
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    const double t = run.at(i, "t");
+    if (t < t1) {
+      EXPECT_GT(run.at(i, "normal_force"), 0.0) << t;
+      continue;
+    }
+    if (!first_free) first_free = i;
+    EXPECT_EQ(run.at(i, "lambda(surface)"), 0.0) << t;
+    EXPECT_NEAR(run.at(i, "der(x)"), run.at(first_free, "der(x)"), 1e-11) << t;
+    EXPECT_NEAR(run.at(i, "der(z)"),
+                run.at(first_free, "der(z)") - g * (t - run.at(first_free, "t")), 1e-10)
+        << t;
+  }
+  EXPECT_NEAR(run.at(first_free - 1, "cos_phi"), cos_phi1, 1e-3);  // the row just before
+  // stop_when: z + R0 reaches 0, the run ends there (before t_end = 1.5)
+  EXPECT_TRUE(run.summary.stopped);
+  EXPECT_EQ(run.summary.phases[2].what, "stop_when 'z + R0' reached 0");
+  EXPECT_LT(run.rows.back()[0], 1.5);
+  EXPECT_LE(run.rows.back()[0], run.summary.phases[2].t);
+}
+
+// §2.10: impacts at t1 = √(2h/g), then every 2 e^k v1/g; the bounces accumulate at
+// t∞ = t1 (1 + e)/(1 − e), after which the table holds the ball with λ = m g. The smooth table
+// leaves ẋ alone.
+TEST(UnilateralContact, BouncingBallComesToRest) {
+  const test::ModelRun run = test::run_model("bouncing-ball");
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const double m = 0.5, h = 1.0, e = 0.8, t1 = std::sqrt(2 * h / g);
+  const auto& phases = run.summary.phases;
+  ASSERT_GT(phases.size(), 20u);
+  EXPECT_EQ(phases[0].what, "'table' free");
+  double expected = t1, speed = g * t1;
+  for (std::size_t k = 1; k <= 20; ++k) {
+    EXPECT_TRUE(phases[k].what.starts_with("impact on 'table'")) << phases[k].what;
+    EXPECT_NEAR(phases[k].t, expected, 1e-9) << "impact " << k;
+    speed *= e;
+    expected += 2 * speed / g;
+  }
+  EXPECT_TRUE(phases.back().what.starts_with("contact 'table' made")) << phases.back().what;
+  EXPECT_NEAR(phases.back().t, t1 * (1 + e) / (1 - e), 1e-5);
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    const double t = run.at(i, "t");
+    EXPECT_NEAR(run.at(i, "x"), 0.3 * t, 1e-12) << t;
+    EXPECT_GE(run.at(i, "z"), -1e-12) << t;
+    if (t > phases.back().t) {
+      EXPECT_NEAR(run.at(i, "z"), 0.0, 1e-12) << t;
+      EXPECT_NEAR(run.at(i, "lambda(table)"), m * g, 1e-9) << t;
+    } else {
+      EXPECT_EQ(run.at(i, "lambda(table)"), 0.0) << t;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace unidyn
