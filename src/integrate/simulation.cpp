@@ -9,6 +9,7 @@
 #include "unidyn/integrate/contacts.hpp"
 #include "unidyn/integrate/dormand_prince.hpp"
 #include "unidyn/integrate/driver.hpp"
+#include "unidyn/integrate/friction_phases.hpp"
 #include "unidyn/integrate/rk4.hpp"
 #include "unidyn/rotation/euler_angles.hpp"
 
@@ -277,19 +278,39 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     data.active = contacts.active();
     projector.set_active(contacts.active());
   };
-  // Event functions: the contacts', then each stop_when expression times its sign at the start.
+  // Event functions: the unilateral contacts', the rough contacts', then each stop_when
+  // expression times its sign at the start.
+  FrictionPhases friction(system, compiled, parameters);
+  const std::size_t U = contacts.event_count(), F = friction.event_count();
   std::vector<double> stop_sign(system.stop_when.size(), 1.0);
   const auto events = [&](double t, const Eigen::VectorXd& y, Eigen::VectorXd& g) {
-    g.resize(static_cast<Eigen::Index>(contacts.event_count() + stop_sign.size()));
+    g.resize(static_cast<Eigen::Index>(U + F + stop_sign.size()));
     const Eigen::VectorXd q = y.head(n), qdot = y.tail(n);
-    if (contacts.any()) contacts.events(t, q, qdot, std::span(g.data(), contacts.event_count()));
+    if (U > 0) contacts.events(t, q, qdot, std::span(g.data(), U));
+    if (F > 0) friction.events(t, q, qdot, data, std::span(g.data() + U, F));
     if (stop_sign.empty()) return;
     compiled.solve(t, q, qdot, parameters, qddot, lambda, data);
     compiled.observe(t, q, qdot, qddot, lambda, parameters, observed, data);
     for (std::size_t s = 0; s < stop_sign.size(); ++s) {
-      g[static_cast<Eigen::Index>(contacts.event_count() + s)] =
-          stop_sign[s] * observed[stops_begin + s];
+      g[static_cast<Eigen::Index>(U + F + s)] = stop_sign[s] * observed[stops_begin + s];
     }
+  };
+  // An event: a contact made or lost, a rough contact sticking or slipping, or a stop.
+  const auto on_event = [&](double t, Eigen::VectorXd& y, std::size_t which) {
+    Eigen::VectorXd yq = y.head(n), yv = y.tail(n);
+    if (which < U) {
+      summary.phases.push_back({t, contacts.handle(t, yq, yv, which)});
+      use_phase();
+      y << yq, yv;
+    } else if (which < U + F) {
+      std::string what = friction.handle(t, yq, yv, which - U, data);
+      if (!what.empty()) summary.phases.push_back({t, std::move(what)});
+    } else {
+      summary.phases.push_back(
+          {t, "stop_when '" + system.stop_when[which - U - F].name + "' reached 0"});
+      return false;
+    }
+    return true;
   };
 
   // Integrate with the projection after every step; rows come through `emit`.
@@ -305,15 +326,20 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
       use_phase();
     }
     if (options.project) summary.initial_projection = projector.project(start.t0, q, qdot);
+    if (F > 0) {
+      for (auto& line : friction.start(start.t0, q, qdot, data)) {
+        summary.phases.push_back({start.t0, std::move(line)});
+      }
+    }
     Eigen::VectorXd y0(2 * n);
     y0 << q, qdot;
     IntegrationCallbacks callbacks;
     callbacks.output = emit;
-    if (contacts.any() || !stop_sign.empty()) {
+    if (U + F + stop_sign.size() > 0) {
       Eigen::VectorXd g0;
       events(start.t0, y0, g0);
       for (std::size_t s = 0; s < stop_sign.size(); ++s) {
-        const double value = g0[static_cast<Eigen::Index>(contacts.event_count() + s)];
+        const double value = g0[static_cast<Eigen::Index>(U + F + s)];
         if (value == 0.0) {
           throw std::invalid_argument("stop_when '" + system.stop_when[s].name +
                                       "' is 0 at the start");
@@ -321,19 +347,7 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
         stop_sign[s] = value > 0 ? 1.0 : -1.0;
       }
       callbacks.events = events;
-      callbacks.on_event = [&](double t, Eigen::VectorXd& y, std::size_t which) {
-        if (which >= contacts.event_count()) {
-          summary.phases.push_back({t, "stop_when '" +
-                                           system.stop_when[which - contacts.event_count()].name +
-                                           "' reached 0"});
-          return false;
-        }
-        Eigen::VectorXd yq = y.head(n), yv = y.tail(n);
-        summary.phases.push_back({t, contacts.handle(t, yq, yv, which)});
-        use_phase();
-        y << yq, yv;
-        return true;
-      };
+      callbacks.on_event = on_event;
     }
     const bool project = options.project && compiled.constraint_count() > 0;
     callbacks.post_step = [&](double t, Eigen::VectorXd& y) {

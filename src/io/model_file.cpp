@@ -876,15 +876,37 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
     if (spec["friction"]) {
       const YAML::Node& f = spec["friction"];
       expect_map(f, "friction");
-      expect_keys(f, {"on", "dynamic", "static"}, "friction");
+      expect_keys(f, {"on", "dynamic", "static", "surface_velocity"}, "friction");
       if (!f["on"] || !f["dynamic"]) fail(f, "friction needs on: (a particle) and dynamic:");
-      Friction friction{scalar(f["on"], "on"), scalar_expr(f["dynamic"], scope, "dynamic"), 0};
+      if (c.kind != Constraint::Kind::position) {
+        fail(f, "friction acts at the contact of a position constraint (a surface or curve)");
+      }
+      Friction friction{scalar(f["on"], "on"), scalar_expr(f["dynamic"], scope, "dynamic"), 0,
+                        VectorExpr{}};
+      expect_state_only(f["dynamic"], friction.dynamic_coefficient, system, "a coefficient");
       friction.static_coefficient =
           f["static"] ? scalar_expr(f["static"], scope, "static") : friction.dynamic_coefficient;
+      expect_state_only(f["static"] ? f["static"] : f, friction.static_coefficient, system,
+                        "a coefficient");
+      if (f["surface_velocity"]) {
+        friction.surface_velocity = vector_expr(f["surface_velocity"], scope, "surface_velocity");
+        expect_state_only(f["surface_velocity"], friction.surface_velocity, system,
+                          "a surface velocity");
+      }
       if (!system.find_particle(friction.on)) fail(f["on"], "on: must name a particle");
       c.friction = friction;
     }
     system.constraints.push_back(std::move(c));
+  }
+  // a rough contact needs its normal ∂Ψ/∂r_P, which needs the coordinates to fix the positions
+  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+    if (!system.constraints[k].friction) continue;
+    try {
+      constraint_gradient(system, constraint_row(system, k));
+    } catch (const std::invalid_argument& e) {
+      throw ModelError(system.constraints[k].where,
+                       "friction on '" + system.constraints[k].name + "': " + e.what());
+    }
   }
 }
 

@@ -69,7 +69,11 @@ ConstraintLoads solve_constraint_loads(const System& system, const std::vector<E
   for (std::size_t k = 0; k < system.constraints.size(); ++k) {
     if (system.constraints[k].parametrisation) extra.push_back(constraint_row(system, k));
   }
-  if (3 * slots.size() + extra.size() != n) {
+  const auto columns = static_cast<unsigned>(3 * slots.size() + extra.size());
+  // fewer coordinates than that is fine for one moving particle (kept in a plane, say): the
+  // least-norm x, the load along the directions its coordinates can move it
+  const bool one_particle = slots.size() == 1 && slots[0].kind == Slot::Kind::particle;
+  if (columns != n && !(one_particle && extra.empty() && columns > n)) {
     throw std::invalid_argument(
         "a constraint's force on a particle or body needs the coordinates to fix the moving "
         "positions and orientations one to one (3 per moving particle, 3 per moving centre, 3 per "
@@ -77,7 +81,7 @@ ConstraintLoads solve_constraint_loads(const System& system, const std::vector<E
         "B.constraint_force (m a - F) instead");
   }
   // Jᵀ x = a with column block s of Jᵀ the partials of slot s
-  GiNaC::matrix Jt(n, n), rhs(n, 1), unknowns(n, 1);
+  GiNaC::matrix Jt(n, columns), rhs(n, 1), unknowns(n, 1);
   for (unsigned i = 0; i < n; ++i) {
     rhs(i, 0) = a[i];
     unknowns(i, 0) = GiNaC::symbol();
@@ -92,7 +96,13 @@ ConstraintLoads solve_constraint_loads(const System& system, const std::vector<E
   }
   GiNaC::matrix x;
   try {
-    x = Jt.solve(unknowns, rhs);
+    if (columns == n) {
+      x = Jt.solve(unknowns, rhs);
+    } else {
+      // x = J (Jᵀ J)⁻¹ a: (Jᵀ J) y = a, x = J y
+      const GiNaC::matrix J = Jt.transpose();
+      x = J.mul(Jt.mul(J).solve(unknowns, rhs));
+    }
   } catch (const std::runtime_error&) {
     throw std::invalid_argument(
         "the coordinates do not determine the positions and orientations here");

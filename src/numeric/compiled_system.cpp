@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "unidyn/equations/friction.hpp"
+
 namespace unidyn {
 namespace {
 
@@ -44,6 +46,22 @@ Tape compile_observer(const System& system, const EquationsOfMotion& eq) {
   return Tape::compile(outputs, tape_inputs(system, true));
 }
 
+// Per rough contact: J (3 × n, row-major), e, the acceleration bias, g, μ_d, μ_s.
+Tape compile_friction(const System& system, const std::vector<FrictionContact>& contacts) {
+  std::vector<Expr> outputs;
+  for (const auto& c : contacts) {
+    for (int k = 0; k < 3; ++k) {
+      for (const auto& column : c.jacobian) outputs.push_back(column[k]);
+    }
+    for (const VectorExpr* v : {&c.velocity_term, &c.acceleration_bias, &c.normal}) {
+      for (int k = 0; k < 3; ++k) outputs.push_back((*v)[k]);
+    }
+    outputs.push_back(c.dynamic_coefficient);
+    outputs.push_back(c.static_coefficient);
+  }
+  return Tape::compile(outputs, tape_inputs(system, false));
+}
+
 }  // namespace
 
 CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& equations)
@@ -53,6 +71,9 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
       dynamics_(compile_dynamics(system, equations)),
       constraints_(compile_constraints(system, equations)),
       observer_(compile_observer(system, equations)) {
+  const std::vector<FrictionContact> contacts = friction_contacts(system);
+  friction_ = compile_friction(system, contacts);
+  for (const auto& c : contacts) friction_constraint_.push_back(c.constraint);
   observation_names_ = {"kinetic_energy", "potential_energy"};
   for (const auto& o : system.outputs) observation_names_.push_back(o.name);
   for (const auto& o : system.conserved) observation_names_.push_back(o.name);
@@ -68,9 +89,13 @@ CompiledSystemData CompiledSystem::make_data() const {
   data.workspace.reserve(dynamics_);
   data.workspace.reserve(constraints_);
   data.workspace.reserve(observer_);
+  data.workspace.reserve(friction_);
+  data.friction_phase.resize(friction_constraint_.size());
+  data.friction.resize(friction_constraint_.size());
+  data.contact_force.assign(friction_constraint_.size(), Eigen::Vector3d::Zero());
   data.inputs.resize(1 + 4 * n_ + m_ + p_);
-  data.outputs.resize(
-      std::max({dynamics_.output_count(), constraints_.output_count(), observer_.output_count()}));
+  data.outputs.resize(std::max({dynamics_.output_count(), constraints_.output_count(),
+                                observer_.output_count(), friction_.output_count()}));
   data.mass_matrix.resize(n_, n_);
   data.forcing.resize(n_);
   data.constraint_matrix.resize(m_, n_);
@@ -114,10 +139,15 @@ void CompiledSystem::solve(double t, const Eigen::VectorXd& q, const Eigen::Vect
   if (!data.mass_matrix.allFinite()) {
     throw std::runtime_error("the mass matrix is not finite at t = " + std::to_string(t));
   }
+  if (!friction_constraint_.empty()) {
+    evaluate_friction(t, q, qdot, parameters, data);
+    solve_with_friction(t, qdot, qddot, lambda, data);
+    return;
+  }
   // only the active constraints take part; an inactive one's λ is 0
   if (data.active.empty() ||
       std::find(data.active.begin(), data.active.end(), false) == data.active.end()) {
-    solve_with(t, data.constraint_matrix, data.constraint_bias, qddot, lambda, data);
+    solve_with(t, data.constraint_matrix, data.constraint_bias, nullptr, qddot, lambda, data);
     return;
   }
   std::vector<Eigen::Index> rows;
@@ -125,17 +155,17 @@ void CompiledSystem::solve(double t, const Eigen::VectorXd& q, const Eigen::Vect
     if (data.active[k]) rows.push_back(static_cast<Eigen::Index>(k));
   }
   Eigen::VectorXd active_lambda;
-  solve_with(t, data.constraint_matrix(rows, Eigen::all), data.constraint_bias(rows), qddot,
-             active_lambda, data);
+  solve_with(t, data.constraint_matrix(rows, Eigen::all), data.constraint_bias(rows), nullptr,
+             qddot, active_lambda, data);
   lambda = Eigen::VectorXd::Zero(Mc);
   lambda(rows) = active_lambda;
 }
 
 void CompiledSystem::solve_with(double t, const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
-                                Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
-                                CompiledSystemData& data) const {
+                                const Eigen::MatrixXd* C, Eigen::VectorXd& qddot,
+                                Eigen::VectorXd& lambda, CompiledSystemData& data) const {
   if (redundant_coordinates_) {
-    solve_saddle_point(t, A, b, qddot, lambda, data);
+    solve_saddle_point(t, A, b, C ? *C : Eigen::MatrixXd(A.transpose()), qddot, lambda, data);
     return;
   }
   // M = L Lᵀ: the mass matrix of a well-posed model is positive definite
@@ -143,12 +173,22 @@ void CompiledSystem::solve_with(double t, const Eigen::MatrixXd& A, const Eigen:
   if (llt.info() != Eigen::Success) {
     // M is only semi-definite when coordinates are redundant (the four Euler parameters of a
     // body); the constraints then make the saddle-point system regular.
-    solve_saddle_point(t, A, b, qddot, lambda, data);
+    solve_saddle_point(t, A, b, C ? *C : Eigen::MatrixXd(A.transpose()), qddot, lambda, data);
     return;
   }
   qddot = llt.solve(data.forcing);
   lambda.resize(A.rows());
-  if (A.rows() > 0) {
+  if (C && A.rows() > 0) {
+    // (A M⁻¹ C) λ = −b − A M⁻¹ f, then q̈ = M⁻¹ (f + C λ): not symmetric
+    const Eigen::MatrixXd MinvC = llt.solve(*C);
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(A * MinvC);
+    if (!lu.isInvertible()) {
+      throw std::runtime_error("the constraints are dependent at t = " + std::to_string(t) +
+                               " (A M⁻¹ C is singular)");
+    }
+    lambda = lu.solve(-b - A * qddot);
+    qddot += MinvC * lambda;
+  } else if (A.rows() > 0) {
     // (A M⁻¹ Aᵀ) λ = −b − A M⁻¹ f, then q̈ = M⁻¹ (f + Aᵀ λ)
     const Eigen::MatrixXd MinvAt = llt.solve(A.transpose());
     const Eigen::MatrixXd schur = A * MinvAt;
@@ -164,13 +204,14 @@ void CompiledSystem::solve_with(double t, const Eigen::MatrixXd& A, const Eigen:
 }
 
 void CompiledSystem::solve_saddle_point(double t, const Eigen::MatrixXd& A,
-                                        const Eigen::VectorXd& b, Eigen::VectorXd& qddot,
-                                        Eigen::VectorXd& lambda, CompiledSystemData& data) const {
+                                        const Eigen::VectorXd& b, const Eigen::MatrixXd& C,
+                                        Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
+                                        CompiledSystemData& data) const {
   const auto N = static_cast<Eigen::Index>(n_), Mc = A.rows();
-  // [M  −Aᵀ; A  0] [q̈; λ] = [f; −b]
+  // [M  −C; A  0] [q̈; λ] = [f; −b]
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(N + Mc, N + Mc);
   K.topLeftCorner(N, N) = data.mass_matrix;
-  K.topRightCorner(N, Mc) = -A.transpose();
+  K.topRightCorner(N, Mc) = -C;
   K.bottomLeftCorner(Mc, N) = A;
   Eigen::VectorXd rhs(N + Mc);
   rhs << data.forcing, -b;

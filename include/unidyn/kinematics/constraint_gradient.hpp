@@ -21,8 +21,9 @@ struct ConstraintLoads {
 // velocity form Σ (g · v + f · v̄ + h · ω) of the constraint. Unique when the coordinates map
 // one-to-one to the moving positions and orientations (3 coordinates per moving particle, 3 per
 // moving centre, 3 per turning body, and one per unit norm of Euler parameters, whose row joins the
-// system with a multiplier of its own); throws std::invalid_argument otherwise. What does not move
-// gets 0.
+// system with a multiplier of its own). One moving particle with fewer coordinates (kept in a
+// plane, say) gets the least-norm solution: the load along the directions it can move. Throws
+// std::invalid_argument otherwise. What does not move gets 0.
 ConstraintLoads solve_constraint_loads(const System& system, const std::vector<Expr>& a);
 
 // The loads of constraint k: the closed forms a joint gave it (8.23), none for a parametrisation

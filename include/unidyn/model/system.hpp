@@ -91,11 +91,13 @@ struct ForceElement {
   std::vector<BodyMoment> moments;
 };
 
-// Coulomb friction on a constraint's contact (issue 5 simulates it).
+// Coulomb friction at a constraint's contact with particle `on` (equations/friction.hpp); the
+// surface moves at `surface_velocity` there (0 for a fixed one).
 struct Friction {
   std::string on;
   Expr dynamic_coefficient;
   Expr static_coefficient;
+  VectorExpr surface_velocity;
 };
 
 // (8.22) The Lagrange representation of a constraint's load on a body: with the constraint's

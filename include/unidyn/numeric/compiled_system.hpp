@@ -18,6 +18,24 @@
 
 namespace unidyn {
 
+// The phase of a rough contact (equations/friction.hpp): sliding, or stuck.
+struct FrictionPhase {
+  bool stick = false;
+  // The slip direction to use while the slip velocity is too small to give one.
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+  // The sign of the normal multiplier λ (|λ| = sign λ keeps the solve linear).
+  double sign = 1.0;
+};
+
+// A rough contact's numbers at a state: J (3 × n), e, the acceleration bias, g, μ_d, μ_s.
+struct FrictionValues {
+  Eigen::MatrixXd jacobian;
+  Eigen::Vector3d velocity_term, acceleration_bias, normal;
+  double dynamic = 0.0, static_coefficient = 0.0;
+  // v_rel = J q̇ + e and its tangential part
+  Eigen::Vector3d relative_velocity, slip;
+};
+
 // The mutable side: registers and matrices one evaluation needs (one per thread).
 struct CompiledSystemData {
   TapeWorkspace workspace;
@@ -31,6 +49,11 @@ struct CompiledSystemData {
   Eigen::VectorXd constraint_position;
   // Which constraints hold now (unilateral contact made or lost); empty: all of them.
   std::vector<bool> active;
+  // Rough contacts: their phases (set by the caller), numbers, and the contact force on the
+  // particle found by the last solve (normal plus friction).
+  std::vector<FrictionPhase> friction_phase;
+  std::vector<FrictionValues> friction;
+  std::vector<Eigen::Vector3d> contact_force;
 };
 
 class CompiledSystem {
@@ -46,6 +69,12 @@ class CompiledSystem {
   const std::vector<std::string>& observation_names() const { return observation_names_; }
   // Which constraints are position constraints (the others are velocity constraints).
   const std::vector<bool>& is_position_constraint() const { return is_position_; }
+  // The constraint of each rough contact.
+  const std::vector<std::size_t>& friction_constraints() const { return friction_constraint_; }
+
+  // The rough contacts' numbers at (t, q, q̇) into data.friction.
+  void evaluate_friction(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                         std::span<const double> parameters, CompiledSystemData& data) const;
 
   CompiledSystemData make_data() const;
 
@@ -66,20 +95,27 @@ class CompiledSystem {
                CompiledSystemData& data) const;
 
  private:
-  // q̈ and λ of M q̈ = f + Aᵀ λ, A q̈ + b = 0 for the given rows A, b (M and f in data).
+  // q̈ and λ of M q̈ = f + C λ, A q̈ + b = 0 for the given rows A, b and columns C (Aᵀ when
+  // null; friction makes them differ); M and f in data.
   void solve_with(double t, const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
-                  Eigen::VectorXd& qddot, Eigen::VectorXd& lambda, CompiledSystemData& data) const;
+                  const Eigen::MatrixXd* C, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
+                  CompiledSystemData& data) const;
   // The full (n + rows) system when M is only semi-definite.
   void solve_saddle_point(double t, const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
-                          Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
+                          const Eigen::MatrixXd& C, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
                           CompiledSystemData& data) const;
+  // The solve with rough contacts: stick rows in place of their normal rows, friction columns.
+  void solve_with_friction(double t, const Eigen::VectorXd& qdot, Eigen::VectorXd& qddot,
+                           Eigen::VectorXd& lambda, CompiledSystemData& data) const;
   void load_state(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                   std::span<const double> parameters, CompiledSystemData& data) const;
 
   std::size_t n_ = 0, m_ = 0, p_ = 0;
   Tape dynamics_;     // [t, q, q̇, p] → M, f, A, b
   Tape constraints_;  // [t, q, q̇, p] → A, e, Ψ
-  Tape observer_;     // [t, q, q̇, q̈, λ, p] → T, U, outputs, conserved
+  Tape observer_;     // [t, q, q̇, q̈, λ, p] → T, U, outputs, conserved, stop_when
+  Tape friction_;     // [t, q, q̇, p] → per rough contact J, e, bias, g, μ_d, μ_s
+  std::vector<std::size_t> friction_constraint_;
   std::vector<std::string> observation_names_;
   std::vector<bool> is_position_;
   // Some coordinates are redundant (Euler parameters): M is semi-definite, whatever round-off

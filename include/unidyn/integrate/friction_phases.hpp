@@ -1,0 +1,52 @@
+// Stick and slip of the rough contacts (book §2.11, (2.27)–(2.30); §5.6): each slides or sticks,
+// and events switch it.
+//   sliding: the event is the slip velocity's component along the direction it had when the phase
+//            began reaching 0 — the slip stopped (1-D: it would reverse) or turned; then the
+//            contact sticks if the force that holds it is inside the static cone |R_t| ≤ μ_s |N|,
+//            and slides on along −R_t otherwise;
+//   sticking: the event is μ_s |N| − |R_t| reaching 0; the contact then slides along −R_t.
+#pragma once
+
+#include <Eigen/Dense>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "unidyn/model/system.hpp"
+#include "unidyn/numeric/compiled_system.hpp"
+
+namespace unidyn {
+
+class FrictionPhases {
+ public:
+  FrictionPhases(const System& system, const CompiledSystem& compiled,
+                 std::span<const double> parameters);
+
+  std::size_t event_count() const { return compiled_.friction_constraints().size(); }
+
+  // Each contact's phase at the start (into data.friction_phase); a summary line per contact.
+  std::vector<std::string> start(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                 CompiledSystemData& data);
+
+  // One event function per contact, for the phases in data.
+  void events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+              CompiledSystemData& data, std::span<double> g);
+
+  // Event `which` at (t, q, q̇): the new phase; what happened (empty when only the slip turned).
+  std::string handle(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                     std::size_t which, CompiledSystemData& data);
+
+ private:
+  // Sticks contact c if its holding force is inside the static cone, else slides along −R_t.
+  std::string stick_or_slide(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                             std::size_t c, CompiledSystemData& data);
+  // |R_t| and |N| of contact c from the last solve
+  std::pair<double, double> tangential_and_normal(std::size_t c,
+                                                  const CompiledSystemData& data) const;
+
+  const System& system_;
+  const CompiledSystem& compiled_;
+  std::span<const double> parameters_;
+};
+
+}  // namespace unidyn

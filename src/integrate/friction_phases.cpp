@@ -1,0 +1,101 @@
+// Stick–slip phases of the rough contacts.
+#include "unidyn/integrate/friction_phases.hpp"
+
+namespace unidyn {
+namespace {
+
+// Slip slower than this (relative to the contact's relative speed scale) counts as none.
+bool slipping(const FrictionValues& f) {
+  return f.slip.norm() > 1e-9 * (1.0 + f.relative_velocity.norm());
+}
+
+}  // namespace
+
+FrictionPhases::FrictionPhases(const System& system, const CompiledSystem& compiled,
+                               std::span<const double> parameters)
+    : system_(system), compiled_(compiled), parameters_(parameters) {}
+
+std::pair<double, double> FrictionPhases::tangential_and_normal(
+    std::size_t c, const CompiledSystemData& data) const {
+  const Eigen::Vector3d n = data.friction[c].normal.normalized();
+  const Eigen::Vector3d& R = data.contact_force[c];
+  const double normal = R.dot(n);
+  return {(R - normal * n).norm(), std::abs(normal)};
+}
+
+std::vector<std::string> FrictionPhases::start(double t, const Eigen::VectorXd& q,
+                                               const Eigen::VectorXd& qdot,
+                                               CompiledSystemData& data) {
+  std::vector<std::string> lines;
+  compiled_.evaluate_friction(t, q, qdot, parameters_, data);
+  for (std::size_t c = 0; c < event_count(); ++c) {
+    const FrictionValues& f = data.friction[c];
+    const std::string name =
+        "'" + system_.constraints[compiled_.friction_constraints()[c]].name + "'";
+    if (slipping(f)) {
+      data.friction_phase[c] = {false, f.slip.normalized(), 1.0};
+      lines.push_back(name + " slides");
+    } else {
+      lines.push_back(stick_or_slide(t, q, qdot, c, data));
+    }
+  }
+  return lines;
+}
+
+void FrictionPhases::events(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                            CompiledSystemData& data, std::span<double> g) {
+  Eigen::VectorXd qddot, lambda;
+  compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data);
+  for (std::size_t c = 0; c < event_count(); ++c) {
+    const FrictionPhase& phase = data.friction_phase[c];
+    if (phase.stick) {
+      const auto [tangential, normal] = tangential_and_normal(c, data);
+      g[c] = data.friction[c].static_coefficient * normal - tangential;
+    } else {
+      g[c] = data.friction[c].slip.dot(phase.direction);
+    }
+  }
+}
+
+std::string FrictionPhases::handle(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                                   std::size_t which, CompiledSystemData& data) {
+  compiled_.evaluate_friction(t, q, qdot, parameters_, data);
+  FrictionPhase& phase = data.friction_phase[which];
+  const std::string name =
+      "'" + system_.constraints[compiled_.friction_constraints()[which]].name + "'";
+  if (phase.stick) {
+    // the static bound is exceeded: slide along −R_t
+    Eigen::VectorXd qddot, lambda;
+    compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data);
+    const Eigen::Vector3d n = data.friction[which].normal.normalized();
+    const Eigen::Vector3d& R = data.contact_force[which];
+    phase = {false, -(R - R.dot(n) * n).normalized(), phase.sign};
+    return "contact " + name + " slips (static friction exceeded)";
+  }
+  if (slipping(data.friction[which])) {
+    phase.direction = data.friction[which].slip.normalized();  // the slip turned: re-arm
+    return "";
+  }
+  return stick_or_slide(t, q, qdot, which, data);
+}
+
+std::string FrictionPhases::stick_or_slide(double t, const Eigen::VectorXd& q,
+                                           const Eigen::VectorXd& qdot, std::size_t c,
+                                           CompiledSystemData& data) {
+  const std::string name =
+      "'" + system_.constraints[compiled_.friction_constraints()[c]].name + "'";
+  FrictionPhase& phase = data.friction_phase[c];
+  phase.stick = true;
+  Eigen::VectorXd qddot, lambda;
+  compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data);
+  const auto [tangential, normal] = tangential_and_normal(c, data);
+  if (tangential <= data.friction[c].static_coefficient * normal) {
+    return "contact " + name + " sticks";
+  }
+  const Eigen::Vector3d n = data.friction[c].normal.normalized();
+  const Eigen::Vector3d& R = data.contact_force[c];
+  phase = {false, -(R - R.dot(n) * n).normalized(), phase.sign};
+  return "contact " + name + " slides on (static friction too weak to hold it)";
+}
+
+}  // namespace unidyn

@@ -1,0 +1,91 @@
+// Coulomb friction with stick–slip (§2.11, (2.27)–(2.31)): a block on a rough incline, and the
+// roller coaster, against closed forms and the book's equation of motion and stick intervals.
+#include <cmath>
+
+#include "support/model_run.hpp"
+
+namespace unidyn {
+namespace {
+
+constexpr double g = 9.81, pi = 3.14159265358979323846;
+
+// Pushed up the slope at v0 = 2 the block decelerates at a = g (sin β + μ_d cos β) and stops at
+// t* = v0/a, x* = −v0²/(2a); with tan β ≤ μ_s it stays, held by −m g sin β (2.30); with tan β > μ_s
+// it slides back at g (sin β − μ_d cos β).
+TEST(Friction, BlockOnAnIncline) {
+  const double m = 2.0, mu_d = 0.25;
+  for (const double beta : {0.2, 0.4}) {
+    const test::ModelRun run = test::run_model("block-incline", {{"beta", beta}});
+    ASSERT_TRUE(run.summary.ok) << run.summary.message;
+    const double a = g * (std::sin(beta) + mu_d * std::cos(beta)), t_stop = 2 / a;
+    ASSERT_EQ(run.summary.phases.size(), 2u);
+    EXPECT_EQ(run.summary.phases[0].what, "'plane' slides");
+    EXPECT_NEAR(run.summary.phases[1].t, t_stop, 1e-10);
+    const bool sticks = std::tan(beta) <= 0.3;
+    EXPECT_EQ(run.summary.phases[1].what, sticks ? "contact 'plane' sticks"
+                                                 : "contact 'plane' slides on (static friction "
+                                                   "too weak to hold it)");
+    const double down = g * (std::sin(beta) - mu_d * std::cos(beta));
+    for (std::size_t i = 0; i < run.rows.size(); ++i) {
+      const double t = run.at(i, "t");
+      EXPECT_NEAR(run.at(i, "normal_force"), m * g * std::cos(beta), 1e-9) << t;
+      if (t < t_stop) {
+        EXPECT_NEAR(run.at(i, "der(x)"), -2 + a * t, 1e-9) << t;
+        EXPECT_NEAR(run.at(i, "friction_force"), mu_d * m * g * std::cos(beta), 1e-9) << t;
+      } else if (sticks) {
+        EXPECT_NEAR(run.at(i, "x"), -2 * 2 / (2 * a), 1e-9) << t;
+        EXPECT_NEAR(run.at(i, "friction_force"), -m * g * std::sin(beta), 1e-9) << t;
+      } else {
+        EXPECT_NEAR(run.at(i, "der(x)"), down * (t - t_stop), 1e-9) << t;
+        EXPECT_NEAR(run.at(i, "friction_force"), -mu_d * m * g * std::cos(beta), 1e-9) << t;
+      }
+    }
+  }
+}
+
+// (2.27) m ((1 + f'²) ẍ + f'' f' ẋ²) = −m g f' − μ_d √(1 + f'²) ‖N‖ sgn ẋ with (2.28)
+// ‖N‖ = m |g + f'' ẋ²| / √(1 + f'²), f = A cos(π x/L0), holds along every sliding stretch; the cart
+// comes to rest only where |f'| ≤ μ_s: |x − k| ≤ arcsin(μ_s L0/(π A))/π = 0.124755 (footnote 17).
+TEST(Friction, RollerCoasterEquationAndStickIntervals) {
+  const double m = 1.0, A = 0.25, mu_d = 0.1, mu_s = 0.3;
+  const double half_width = std::asin(mu_s / (pi * A)) / pi;
+  EXPECT_NEAR(half_width, 0.124755, 5e-7);
+  for (const double speed : {0.5, 2.0, 4.0}) {
+    const test::ModelRun run = test::run_model("roller-coaster", {{"der(x1)", speed}});
+    ASSERT_TRUE(run.summary.ok) << run.summary.message;
+    std::size_t checked = 0;
+    for (std::size_t i = 0; i < run.rows.size(); ++i) {
+      const double x = run.at(i, "x1"), v = run.at(i, "der(x1)"), acc = run.at(i, "ax");
+      if (std::abs(v) < 1e-3) continue;
+      const double f1 = -A * pi * std::sin(pi * x), f2 = -A * pi * pi * std::cos(pi * x);
+      const double root = std::sqrt(1 + f1 * f1);
+      const double normal = m * std::abs(g + f2 * v * v) / root;
+      const double residual = m * ((1 + f1 * f1) * acc + f2 * f1 * v * v) + m * g * f1 +
+                              mu_d * root * normal * (v > 0 ? 1 : -1);
+      EXPECT_NEAR(residual, 0.0, 1e-8) << "x = " << x << " v = " << v;
+      ++checked;
+    }
+    EXPECT_GT(checked, 100u);
+    // it rests at last, and only inside a stick interval; where it turned without sticking
+    // |f'| > μ_s
+    const auto& phases = run.summary.phases;
+    EXPECT_EQ(phases.back().what, "contact 'track' sticks") << "speed " << speed;
+    for (std::size_t k = 1; k < phases.size(); ++k) {
+      std::size_t row = 0;
+      while (row + 1 < run.rows.size() && run.at(row + 1, "t") <= phases[k].t) ++row;
+      const double x = run.at(row, "x1");  // within a row of the event: the cart is nearly still
+      const double distance = std::abs(x - std::round(x));
+      if (phases[k].what == "contact 'track' sticks") {
+        EXPECT_LE(distance, half_width + 1e-6) << "x = " << x;
+      } else {
+        EXPECT_GT(distance, half_width - 1e-3) << "x = " << x;
+      }
+    }
+    const double x_end = run.rows.back()[1];
+    EXPECT_LE(std::abs(x_end - std::round(x_end)), half_width + 1e-9);
+    EXPECT_NEAR(run.rows.back()[4], 0.0, 1e-9);  // der(x1) at rest
+  }
+}
+
+}  // namespace
+}  // namespace unidyn
