@@ -876,13 +876,17 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
     if (spec["friction"]) {
       const YAML::Node& f = spec["friction"];
       expect_map(f, "friction");
-      expect_keys(f, {"on", "dynamic", "static", "surface_velocity"}, "friction");
-      if (!f["on"] || !f["dynamic"]) fail(f, "friction needs on: (a particle) and dynamic:");
+      expect_keys(f, {"on", "at", "dynamic", "static", "surface_velocity"}, "friction");
+      if (!f["on"] || !f["dynamic"]) {
+        fail(f,
+             "friction needs on: (a particle, or a body with at: its point of contact) and "
+             "dynamic:");
+      }
       if (c.kind != Constraint::Kind::position) {
         fail(f, "friction acts at the contact of a position constraint (a surface or curve)");
       }
       Friction friction{scalar(f["on"], "on"), scalar_expr(f["dynamic"], scope, "dynamic"), 0,
-                        VectorExpr{}};
+                        VectorExpr{}, VectorExpr{}};
       expect_state_only(f["dynamic"], friction.dynamic_coefficient, system, "a coefficient");
       friction.static_coefficient =
           f["static"] ? scalar_expr(f["static"], scope, "static") : friction.dynamic_coefficient;
@@ -893,7 +897,18 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
         expect_state_only(f["surface_velocity"], friction.surface_velocity, system,
                           "a surface velocity");
       }
-      if (!system.find_particle(friction.on)) fail(f["on"], "on: must name a particle");
+      const bool body = system.find_body(friction.on).has_value();
+      if (!system.find_particle(friction.on) && !body) {
+        fail(f["on"], "on: must name a particle or a body");
+      }
+      if (body != static_cast<bool>(f["at"])) {
+        fail(f, body ? "friction on a body needs at: its point of contact, e.g. \"B.center - R*E3\""
+                     : "at: is for a body's point of contact; a particle is its own");
+      }
+      if (body) {
+        friction.at = vector_expr(f["at"], scope, "at");
+        expect_state_only(f["at"], friction.at, system, "a point of contact");
+      }
       c.friction = friction;
     }
     system.constraints.push_back(std::move(c));
@@ -902,7 +917,7 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
   for (std::size_t k = 0; k < system.constraints.size(); ++k) {
     if (!system.constraints[k].friction) continue;
     try {
-      constraint_gradient(system, constraint_row(system, k));
+      constraint_loads(system, k);
     } catch (const std::invalid_argument& e) {
       throw ModelError(system.constraints[k].where,
                        "friction on '" + system.constraints[k].name + "': " + e.what());

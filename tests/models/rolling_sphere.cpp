@@ -43,5 +43,29 @@ TEST(RollingSphere, TurntableCirclesAtTwoSeventhsOmega) {
   EXPECT_LT(run.summary.max_velocity_residual, 1e-10);
 }
 
+// (9.27)–(9.29): thrown at u0 without spin, the sphere slides with ẍ1 = −μ_d g and
+// ω̇2 = (5/2) μ_d g/R until the slip u0 − μ_d g t − R ω2 vanishes at T = 2 u0/(7 μ_d g); then it
+// rolls at (5/7) u0 with no friction needed (§9.8).
+TEST(RollingSphere, SlidesThenRolls) {
+  const test::ModelRun run = test::run_model("sphere-slide-roll");
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const double g = 9.81, R = 0.1, mu = 0.2, u0 = 2.0, T = 2 * u0 / (7 * mu * g);
+  ASSERT_EQ(run.summary.phases.size(), 2u);
+  EXPECT_EQ(run.summary.phases[0].what, "'table' slides");
+  EXPECT_EQ(run.summary.phases[1].what, "contact 'table' sticks");
+  EXPECT_NEAR(run.summary.phases[1].t, T, 1e-10);
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    const double t = run.at(i, "t");
+    if (t < T) {
+      EXPECT_NEAR(run.at(i, "der(x1)"), u0 - mu * g * t, 1e-9) << t;
+      EXPECT_NEAR(run.at(i, "w2"), 2.5 * mu * g / R * t, 1e-8) << t;
+    } else {
+      EXPECT_NEAR(run.at(i, "der(x1)"), 5.0 / 7.0 * u0, 1e-9) << t;
+      EXPECT_NEAR(run.at(i, "slip"), 0.0, 1e-9) << t;
+      EXPECT_NEAR(run.at(i, "lambda(table)"), 9.81, 1e-9) << t;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace unidyn

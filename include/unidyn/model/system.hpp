@@ -91,13 +91,15 @@ struct ForceElement {
   std::vector<BodyMoment> moments;
 };
 
-// Coulomb friction at a constraint's contact with particle `on` (equations/friction.hpp); the
-// surface moves at `surface_velocity` there (0 for a fixed one).
+// Coulomb friction at a constraint's contact with particle or body `on` (equations/friction.hpp),
+// a body touching at the point `at` (e.g. its centre − R E3 for a ball on a table); the surface
+// moves at `surface_velocity` there (0 for a fixed one).
 struct Friction {
   std::string on;
   Expr dynamic_coefficient;
   Expr static_coefficient;
   VectorExpr surface_velocity;
+  VectorExpr at;
 };
 
 // (8.22) The Lagrange representation of a constraint's load on a body: with the constraint's
