@@ -3,7 +3,9 @@
 #include <cmath>
 
 #include "support/model_run.hpp"
+#include "unidyn/equations/reduction.hpp"
 #include "unidyn/kinematics/integrability.hpp"
+#include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn {
 namespace {
@@ -55,6 +57,46 @@ TEST(RollingDisk, SteadyCircularRolling) {
     EXPECT_NEAR(run.at(i, "theta"), theta0, 1e-9) << run.at(i, "t");
     EXPECT_NEAR(run.at(i, "der(psi)"), Omega, 1e-8) << run.at(i, "t");
   }
+}
+
+}  // namespace
+}  // namespace unidyn
+
+namespace unidyn {
+namespace {
+
+// (10.37)–(10.38), sliding on a smooth plane: with x3 = R sin θ eliminated (approach II), the θ
+// equation is the notes' correction of (10.38) (the printed one lacks the centre's vertical
+// motion):
+//   (λ + m R² cos²θ) θ̈ − m R² sin θ cos θ θ̇² + λ3 φ̇ ψ̇ sin θ + (λ3 − λ) ψ̇² sin 2θ/2 = −m g R cos θ.
+TEST(SlidingDisk, ThetaEquationIsTheCorrected1038) {
+  const Reduction reduced = eliminate_constraints(load_model(test::model_path("sliding-disk")));
+  const System& s = reduced.system;
+  ASSERT_EQ(s.coordinates().size(), 5u);
+  const EquationsOfMotion eq = lagrange_equations(s);
+  const auto p = [&](const char* name) {
+    return Expr(s.parameters[*s.find_parameter(name)].symbol);
+  };
+  const Expr m_ = p("m"), g_ = p("g"), R_ = p("R"), l = m_ * R_ * R_ / 4, l3 = 2 * l;
+  const auto& q = s.coordinates();
+  const std::size_t theta = *s.find_coordinate("theta");
+  const Expr th = q[theta].value, thd = q[theta].rate, thdd = q[theta].acceleration;
+  const Expr psid = q[*s.find_coordinate("psi")].rate, phid = q[*s.find_coordinate("phi")].rate;
+  const Expr c = GiNaC::cos(th), sn = GiNaC::sin(th);
+  const Expr book = (l + m_ * R_ * R_ * c * c) * thdd - m_ * R_ * R_ * sn * c * thd * thd +
+                    l3 * phid * psid * sn + (l3 - l) * psid * psid * sn * c + m_ * g_ * R_ * c;
+  const Expr ours = eq.inertia_terms[theta] + eq.potential_energy.diff(q[theta].value) -
+                    eq.generalized_force[theta];
+  EXPECT_TRUE(simplify(ours - book).is_zero()) << simplify(ours - book);
+}
+
+// The integrals of the sliding disk: uniform horizontal motion of the centre, the spin about e3,
+// H · E3, and E.
+TEST(SlidingDisk, Integrals) {
+  const test::ModelRun run = test::run_model("sliding-disk");
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  EXPECT_LT(run.summary.energy_relative_drift, 1e-11);
+  for (const auto& c : run.summary.conserved_drift) EXPECT_LT(c.max_change, 1e-11) << c.name;
 }
 
 }  // namespace
