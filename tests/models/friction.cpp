@@ -89,3 +89,76 @@ TEST(Friction, RollerCoasterEquationAndStickIntervals) {
 
 }  // namespace
 }  // namespace unidyn
+
+namespace unidyn {
+namespace {
+
+// (5.5)–(5.6) with K2 = 0 and no drive: m1 alone is the classical Coulomb oscillator. Each half
+// cycle (π/ω, ω = √(K1/m1)) is harmonic about c_k = δ sgn X_k, δ = μ_d m g/K1, from the turning
+// point X_k to X_{k+1} = 2 c_k − X_k; it sticks at the first turning point with |K1 X_k| ≤ μ_s m g.
+TEST(Friction, CoulombOscillatorDecaysAndSticks) {
+  const test::ModelRun run =
+      test::run_model("stick-slip-oscillator",
+                      {{"K2", 0.0}, {"P", 0.0}, {"x2", 0.0}, {"mu_d", 0.05}, {"mu_s", 0.08}});
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const double m = 1.0, K = 50.0, mu_d = 0.05, mu_s = 0.08, omega = std::sqrt(K / m);
+  const double delta = mu_d * m * g / K, hold = mu_s * m * g / K, half = pi / omega;
+  // the turning points and the half cycle where it sticks
+  std::vector<double> X{0.2};
+  while (std::abs(X.back()) > hold) {
+    const double c = delta * (X.back() > 0 ? 1 : -1);
+    X.push_back(2 * c - X.back());
+  }
+  const double t_stick = half * double(X.size() - 1);
+  std::size_t sticks = 0;
+  for (const auto& phase : run.summary.phases) {
+    if (phase.what == "contact 'table1' sticks" && phase.t > 0) {
+      EXPECT_NEAR(phase.t, t_stick, 1e-9);
+      ++sticks;
+    }
+  }
+  EXPECT_EQ(sticks, 1u);
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    const double t = run.at(i, "t");
+    const auto k = std::min(static_cast<std::size_t>(t / half), X.size() - 1);
+    double expected = X.back();
+    if (t < t_stick) {
+      const double c = delta * (X[k] > 0 ? 1 : -1);
+      expected = c + (X[k] - c) * std::cos(omega * (t - half * double(k)));
+    }
+    EXPECT_NEAR(run.at(i, "x1"), expected, 1e-9) << t;
+    EXPECT_NEAR(run.at(i, "x2"), 0.0, 1e-12) << t;  // m2 stays stuck
+  }
+}
+
+// Driven (P = 3, μ_d = 0.2, μ_s = 0.3), the masses alternate between sliding and sticking; while
+// m1 sticks it stays put and (5.6) |K1 x10 + K2 (x10 − x2)| ≤ μ_s m1 g holds.
+TEST(Friction, DrivenOscillatorSticksAndSlips) {
+  const test::ModelRun run = test::run_model("stick-slip-oscillator");
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const double K1 = 50.0, K2 = 30.0, mu_s = 0.3, m1 = 1.0;
+  // m1's stuck intervals, from its events
+  std::vector<std::pair<double, double>> stuck;
+  for (const auto& phase : run.summary.phases) {
+    if (phase.what == "contact 'table1' sticks") stuck.emplace_back(phase.t, 1e300);
+    if (phase.what == "contact 'table1' slips (static friction exceeded)" && !stuck.empty()) {
+      stuck.back().second = phase.t;
+    }
+  }
+  ASSERT_GE(stuck.size(), 2u);
+  std::size_t checked = 0;
+  for (const auto& [from, to] : stuck) {
+    for (std::size_t i = 0; i < run.rows.size(); ++i) {
+      const double t = run.at(i, "t");
+      if (t <= from || t >= to) continue;
+      const double x1 = run.at(i, "x1"), x2 = run.at(i, "x2");
+      EXPECT_NEAR(run.at(i, "der(x1)"), 0.0, 1e-10) << t;
+      EXPECT_LE(std::abs(K1 * x1 + K2 * (x1 - x2)), mu_s * m1 * g + 1e-9) << t;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 20u);
+}
+
+}  // namespace
+}  // namespace unidyn
