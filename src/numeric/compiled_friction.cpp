@@ -12,11 +12,7 @@ void CompiledSystem::evaluate_friction(double t, const Eigen::VectorXd& q,
                                        const Eigen::VectorXd& qdot,
                                        std::span<const double> parameters,
                                        CompiledSystemData& data) const {
-  load_state(t, q, qdot, parameters, data);
-  const std::span<const double> inputs(data.inputs.data(), 1 + 2 * n_ + p_);
-  friction_.evaluate(inputs, std::span(data.outputs.data(), friction_.output_count()),
-                     data.workspace);
-  const double* out = data.outputs.data();
+  const double* out = evaluate_at(friction_, t, q, qdot, parameters, data);
   const auto N = static_cast<Eigen::Index>(n_);
   for (FrictionValues& f : data.friction) {
     f.jacobian =

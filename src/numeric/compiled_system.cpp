@@ -117,14 +117,20 @@ void CompiledSystem::load_state(double t, const Eigen::VectorXd& q, const Eigen:
   for (std::size_t k = 0; k < p_; ++k) data.inputs[1 + 2 * n_ + k] = parameters[k];
 }
 
+const double* CompiledSystem::evaluate_at(const Tape& tape, double t, const Eigen::VectorXd& q,
+                                          const Eigen::VectorXd& qdot,
+                                          std::span<const double> parameters,
+                                          CompiledSystemData& data) const {
+  load_state(t, q, qdot, parameters, data);
+  const std::span<const double> inputs(data.inputs.data(), 1 + 2 * n_ + p_);
+  tape.evaluate(inputs, std::span(data.outputs.data(), tape.output_count()), data.workspace);
+  return data.outputs.data();
+}
+
 void CompiledSystem::solve(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                            std::span<const double> parameters, Eigen::VectorXd& qddot,
                            Eigen::VectorXd& lambda, CompiledSystemData& data) const {
-  load_state(t, q, qdot, parameters, data);
-  const std::span<const double> inputs(data.inputs.data(), 1 + 2 * n_ + p_);
-  dynamics_.evaluate(inputs, std::span(data.outputs.data(), dynamics_.output_count()),
-                     data.workspace);
-  const double* out = data.outputs.data();
+  const double* out = evaluate_at(dynamics_, t, q, qdot, parameters, data);
   const auto N = static_cast<Eigen::Index>(n_);
   const auto Mc = static_cast<Eigen::Index>(m_);
   data.mass_matrix =
@@ -228,11 +234,7 @@ void CompiledSystem::solve_saddle_point(double t, const Eigen::MatrixXd& A,
 void CompiledSystem::constraints(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                                  std::span<const double> parameters,
                                  CompiledSystemData& data) const {
-  load_state(t, q, qdot, parameters, data);
-  const std::span<const double> inputs(data.inputs.data(), 1 + 2 * n_ + p_);
-  constraints_.evaluate(inputs, std::span(data.outputs.data(), constraints_.output_count()),
-                        data.workspace);
-  const double* out = data.outputs.data();
+  const double* out = evaluate_at(constraints_, t, q, qdot, parameters, data);
   const auto N = static_cast<Eigen::Index>(n_);
   const auto Mc = static_cast<Eigen::Index>(m_);
   data.constraint_matrix =

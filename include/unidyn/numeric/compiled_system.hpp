@@ -109,6 +109,10 @@ class CompiledSystem {
                            Eigen::VectorXd& lambda, CompiledSystemData& data) const;
   void load_state(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                   std::span<const double> parameters, CompiledSystemData& data) const;
+  // Evaluates a tape of inputs [t, q, q̇, p] at the state; returns its outputs (in data).
+  const double* evaluate_at(const Tape& tape, double t, const Eigen::VectorXd& q,
+                            const Eigen::VectorXd& qdot, std::span<const double> parameters,
+                            CompiledSystemData& data) const;
 
   std::size_t n_ = 0, m_ = 0, p_ = 0;
   Tape dynamics_;     // [t, q, q̇, p] → M, f, A, b
