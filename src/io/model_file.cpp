@@ -270,6 +270,7 @@ class ModelReader {
   ForcePoint force_point(const YAML::Node& node, const System& system, const Scope& scope);
   void read_constraints(const YAML::Node& node, System& system);
   void read_joint(const YAML::Node& spec, const std::string& name, System& system);
+  void read_rolling(const YAML::Node& spec, const std::string& name, System& system);
   void read_initial(const YAML::Node& node, System& system);
   void read_simulate(const YAML::Node& node, System& system);
   std::vector<Output> read_outputs(const YAML::Node& node, const System& system,
@@ -791,19 +792,21 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
   std::set<std::string> names;
   for (const auto& spec : node) {
     expect_map(spec, "a constraint");
-    expect_keys(
-        spec,
-        {"name", "position", "velocity", "ball", "pin", "unilateral", "restitution", "friction"},
-        "a constraint");
-    if (!!spec["position"] + !!spec["velocity"] + !!spec["ball"] + !!spec["pin"] != 1) {
+    expect_keys(spec,
+                {"name", "position", "velocity", "ball", "pin", "rolling", "unilateral",
+                 "restitution", "friction"},
+                "a constraint");
+    if (!!spec["position"] + !!spec["velocity"] + !!spec["ball"] + !!spec["pin"] +
+            !!spec["rolling"] !=
+        1) {
       fail(spec,
            "a constraint needs exactly one of position: Ψ(q, t), velocity: (linear in der(q)), "
-           "ball: or pin: (a joint)");
+           "ball: or pin: (a joint), or rolling: (without slip)");
     }
     // one name space with parameters, coordinates and particles (c.lambda, lambda(c) columns)
     const std::string name = spec["name"] ? new_name(spec["name"], system, "constraint")
                                           : "c" + std::to_string(system.constraints.size() + 1);
-    if (spec["ball"] || spec["pin"]) {
+    if (spec["ball"] || spec["pin"] || spec["rolling"]) {
       const std::size_t first_row = system.constraints.size();
       read_joint(spec, name, system);
       for (std::size_t k = first_row; k < system.constraints.size(); ++k) {
@@ -929,6 +932,10 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
 // to_point: (default the origin); pin: the same with axis: [A on A] and to_axis: [on B, or a
 // fixed direction; default the same numbers as axis]. Rows name_1 .. name_3 (.. name_5 for a pin).
 void ModelReader::read_joint(const YAML::Node& spec, const std::string& name, System& system) {
+  if (spec["rolling"]) {
+    read_rolling(spec, name, system);
+    return;
+  }
   const bool pin = static_cast<bool>(spec["pin"]);
   const YAML::Node j = pin ? spec["pin"] : spec["ball"];
   const std::string what = pin ? "a pin" : "a ball joint";
@@ -986,6 +993,39 @@ void ModelReader::read_joint(const YAML::Node& spec, const std::string& name, Sy
       fail(spec, "the joint's row '" + c.name + "' clashes with a name already defined");
     }
     system.constraints.push_back(c);
+  }
+}
+
+// rolling: {body: B, at: <its point of contact>, normal: [n1, n2, n3]}: rows name_1, name_2 that
+// keep the contact from slipping on the fixed surface (model/joints.hpp).
+void ModelReader::read_rolling(const YAML::Node& spec, const std::string& name, System& system) {
+  const YAML::Node r = spec["rolling"];
+  expect_map(r, "rolling");
+  expect_keys(r, {"body", "at", "normal"}, "rolling");
+  if (spec["unilateral"] || spec["friction"] || spec["restitution"]) {
+    fail(spec, "rolling cannot be unilateral or carry friction (it is the no-slip condition)");
+  }
+  if (!r["body"] || !r["at"] || !r["normal"]) {
+    fail(r, "rolling needs body:, at: (its point of contact) and normal: (the surface's, numbers)");
+  }
+  const auto b = system.find_body(scalar(r["body"], "body"));
+  if (!b) fail(r["body"], "body: must name a body");
+  const SystemScope scope(system);
+  const VectorExpr contact = vector_expr(r["at"], scope, "at");
+  expect_state_only(r["at"], contact, system, "a point of contact");
+  const VectorExpr normal = vector_expr(r["normal"], scope, "normal");
+  for (int i = 0; i < 3; ++i) {
+    if (!GiNaC::is_a<GiNaC::numeric>(normal[i])) {
+      fail(r["normal"], "a normal is a vector of numbers, e.g. [0, 0, 1]");
+    }
+  }
+  if (norm(normal).is_zero()) fail(r["normal"], "a normal cannot be zero");
+  for (auto& c : rolling_contact(system, name, *b, contact, normal, at(spec))) {
+    if (system.find_parameter(c.name) || system.find_coordinate(c.name) ||
+        system.find_particle(c.name) || system.find_body(c.name)) {
+      fail(spec, "the rolling row '" + c.name + "' clashes with a name already defined");
+    }
+    system.constraints.push_back(std::move(c));
   }
 }
 

@@ -1,6 +1,7 @@
 // Ball joints and pins as constraints with their Lagrange representation (8.22)–(8.24).
 #include "unidyn/model/joints.hpp"
 
+#include <array>
 #include <stdexcept>
 
 namespace unidyn {
@@ -24,10 +25,11 @@ VectorExpr in_space(const System& system, const JointEnd& end, const VectorExpr&
   return end.body ? times(system.bodies[*end.body].rotation, v) : v;
 }
 
-Constraint row(const std::string& joint, int k, const Expr& psi, const SourcePosition& where) {
+Constraint row(const std::string& joint, int k, const Expr& psi, const SourcePosition& where,
+               Constraint::Kind kind = Constraint::Kind::position) {
   const std::string name = joint + "_" + std::to_string(k);
   return {name,
-          Constraint::Kind::position,
+          kind,
           psi,
           GiNaC::realsymbol("lambda(" + name + ")",
                             "\\mu_{\\mathrm{" + joint + "}," + std::to_string(k) + "}"),
@@ -58,7 +60,39 @@ VectorExpr unit_numeric(const VectorExpr& v, const char* which) {
   return v / length;
 }
 
+// B1, B2 completing the unit vector of numbers A to an orthonormal triad {A, B1, B2}: B1 from the
+// basis vector least aligned with A.
+std::array<VectorExpr, 2> perpendiculars(const VectorExpr& A) {
+  const auto size = [&](int k) {
+    return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(GiNaC::abs(A[k - 1]))).to_double();
+  };
+  int least = 1;
+  for (int k = 2; k <= 3; ++k) {
+    if (size(k) < size(least)) least = k;
+  }
+  VectorExpr B1 = cross(A, basis_vector_expr(least));
+  B1 = B1 / norm(B1);
+  return {B1, cross(A, B1)};
+}
+
 }  // namespace
+
+std::vector<Constraint> rolling_contact(const System& system, const std::string& name,
+                                        std::size_t body, const VectorExpr& contact,
+                                        const VectorExpr& normal, const SourcePosition& where) {
+  const VectorExpr arm = contact - system.bodies[body].center;
+  // v_P = v̄ + ω × (x_P − x̄), the velocity of the body's material point at the contact
+  const VectorExpr v_P = system.center_velocity(body) + cross(system.angular_velocity(body), arm);
+  std::vector<Constraint> rows;
+  int k = 1;
+  for (const VectorExpr& t : perpendiculars(unit_numeric(normal, "normal"))) {
+    // v_P · t = 0: f = t, h = (x_P − x̄) × t
+    Constraint c = row(name, k++, dot(v_P, t), where, Constraint::Kind::velocity);
+    c.loads.push_back({body, t, cross(arm, t)});
+    rows.push_back(std::move(c));
+  }
+  return rows;
+}
 
 std::vector<Constraint> ball_joint(const System& system, const std::string& name,
                                    const JointEnd& first, const JointEnd& second,
@@ -82,20 +116,9 @@ std::vector<Constraint> pin_joint(const System& system, const std::string& name,
   std::vector<Constraint> rows = ball_joint(system, name, first, second, where);
   const VectorExpr A1 = unit_numeric(first.axis, "first axis");
   const VectorExpr A2 = unit_numeric(second.axis, "second axis");
-  // {A2, B1, B2} orthonormal: B1 from the basis vector least aligned with A2
-  const auto size = [&](int k) {
-    return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(GiNaC::abs(A2[k - 1]))).to_double();
-  };
-  int least = 1;
-  for (int k = 2; k <= 3; ++k) {
-    if (size(k) < size(least)) least = k;
-  }
-  VectorExpr B1 = cross(A2, basis_vector_expr(least));
-  B1 = B1 / norm(B1);
-  const VectorExpr B2 = cross(A2, B1);
   const VectorExpr a1 = in_space(system, first, A1);
   int k = 4;
-  for (const VectorExpr& B : {B1, B2}) {
+  for (const VectorExpr& B : perpendiculars(A2)) {
     // Ψ = a_1 · b_j, f = 0, h = ±a_1 × b_j
     const VectorExpr b = in_space(system, second, B);
     Constraint c = row(name, k++, dot(a1, b), where);

@@ -801,6 +801,10 @@ TEST(ModelFileErrors, BodyJointsAndLoads) {
   expect_error(force(no_body), 7, column_of(no_body, "C}"), {"on: must name a body"});
   const std::string not_angle = "  - torsion_spring: {on: B, angle: x, stiffness: K}";
   expect_error(force(not_angle), 7, column_of(not_angle, "x,"), {"one of the body's Euler"});
+  const std::string no_normal = "  - {name: r, rolling: {body: B, at: B.center}}";
+  expect_error(constraint(no_normal), 7, column_of(no_normal, "{body"), {"normal:"});
+  const std::string bent = "  - {name: r, rolling: {body: B, at: B.center, normal: [0, 0, m]}}";
+  expect_error(constraint(bent), 7, column_of(bent, "[0"), {"vector of numbers"});
   const std::string gradient = "  - gravity_gradient: {on: B}";
   expect_error(force(gradient), 7, column_of(gradient, "{on"), {"GM:"});
 }

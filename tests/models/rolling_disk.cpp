@@ -1,9 +1,12 @@
 // The rolling disk (§10.7, (10.25)–(10.36)): energy, the contact force and moment M_c = π_P × F_c,
 // Euler's laws with the multipliers, integrability (Ex. 8.9), and its steady motions.
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
 #include "support/model_run.hpp"
 #include "unidyn/equations/reduction.hpp"
+#include "unidyn/kinematics/constraint_gradient.hpp"
 #include "unidyn/kinematics/integrability.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
@@ -97,6 +100,59 @@ TEST(SlidingDisk, Integrals) {
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
   EXPECT_LT(run.summary.energy_relative_drift, 1e-11);
   for (const auto& c : run.summary.conserved_drift) EXPECT_LT(c.max_change, 1e-11) << c.name;
+}
+
+}  // namespace
+}  // namespace unidyn
+
+namespace unidyn {
+namespace {
+
+// `rolling: {body, at, normal}` is the same pair of no-slip rows as the two written out in
+// rolling-disk.yaml: one motion; and its closed-form loads f = t, h = (x_P − x̄) × t (8.22) are the
+// ones solved from its rows.
+TEST(RollingDisk, RollingShorthandIsTheWrittenOutConstraints) {
+  std::ifstream file(test::model_path("rolling-disk"));
+  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::size_t from = text.find("  - {name: pi1"), to = text.find("# leaning");
+  ASSERT_NE(from, std::string::npos);
+  ASSERT_NE(to, std::string::npos);
+  text.replace(from, to - from,
+               "  - {name: roll, rolling: {body: disk, at: \"disk.center + "
+               "R*[cos(theta)*sin(psi), -cos(theta)*cos(psi), -sin(theta)]\", normal: [0, 0, "
+               "1]}}\n");
+  text = text.substr(0, text.find("outputs:"));
+  const System shorthand = parse_model(text, "rolling-shorthand.yaml");
+  ASSERT_EQ(shorthand.constraints.size(), 3u);
+  EXPECT_EQ(shorthand.constraints[1].name, "roll_1");
+  EXPECT_EQ(shorthand.constraints[1].kind, Constraint::Kind::velocity);
+  // the loads
+  GiNaC::exmap state = shorthand.parameter_values();
+  double value = 0.2;
+  for (const auto& q : shorthand.coordinates()) state[q.value] = value += 0.31;
+  const auto number = [&](const Expr& e) {
+    return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(state))).to_double();
+  };
+  for (std::size_t k = 1; k < 3; ++k) {
+    const ConstraintLoads closed = constraint_loads(shorthand, k);
+    const ConstraintLoads solved = solve_constraint_loads(shorthand, constraint_row(shorthand, k));
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(number(closed.body_force[0][i]), number(solved.body_force[0][i]), 1e-12);
+      EXPECT_NEAR(number(closed.body_moment[0][i]), number(solved.body_moment[0][i]), 1e-12);
+    }
+  }
+  // the motion
+  const test::ModelRun written = test::run_model("rolling-disk");
+  const CompiledSystem compiled(shorthand, lagrange_equations(shorthand));
+  std::vector<std::vector<double>> rows;
+  const SimulationSummary s = simulate(
+      shorthand, compiled, initial_state(shorthand, {}), simulation_options(shorthand.simulate),
+      [&](const std::vector<double>& row) { rows.push_back(row); });
+  ASSERT_TRUE(s.ok) << s.message;
+  ASSERT_EQ(rows.size(), written.rows.size());
+  for (std::size_t i = 0; i < rows.size(); i += 10) {
+    for (std::size_t c = 1; c <= 6; ++c) EXPECT_NEAR(rows[i][c], written.rows[i][c], 1e-10);
+  }
 }
 
 }  // namespace

@@ -40,6 +40,15 @@ std::vector<Constraint> ball_joint(const System& system, const std::string& name
                                    const JointEnd& first, const JointEnd& second,
                                    const SourcePosition& where);
 
+// Rolling without slip of body B on a fixed surface with normal n (a vector of numbers) at the
+// point of contact x_P (book §8.6, (8.21), (10.27)): the velocity rows name_1, name_2
+//   (v̄ + ω × (x_P − x̄)) · t_j = 0,   t_j ⊥ n,
+// with f = t_j and h = (x_P − x̄) × t_j (8.22): the friction force at P and its moment. The normal
+// contact is a position constraint of its own.
+std::vector<Constraint> rolling_contact(const System& system, const std::string& name,
+                                        std::size_t body, const VectorExpr& contact,
+                                        const VectorExpr& normal, const SourcePosition& where);
+
 // The rows of a pin: name_1 .. name_3 for the common point, name_4, name_5 for the common axis.
 // Throws std::invalid_argument when an axis is not a non-zero vector of numbers.
 std::vector<Constraint> pin_joint(const System& system, const std::string& name,
