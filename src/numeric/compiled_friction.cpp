@@ -55,10 +55,8 @@ Eigen::Vector3d slip_direction(const FrictionValues& f, const FrictionPhase& pha
 
 }  // namespace
 
-void CompiledSystem::solve_with_friction(double t, const Eigen::VectorXd& qdot,
-                                         Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
+void CompiledSystem::solve_with_friction(double t, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
                                          CompiledSystemData& data) const {
-  (void)qdot;
   const auto N = static_cast<Eigen::Index>(n_);
   const std::size_t contacts = friction_constraint_.size();
   std::vector<int> contact_of(m_, -1);  // the rough contact of each constraint

@@ -147,7 +147,7 @@ void CompiledSystem::solve(double t, const Eigen::VectorXd& q, const Eigen::Vect
   }
   if (!friction_constraint_.empty()) {
     evaluate_friction(t, q, qdot, parameters, data);
-    solve_with_friction(t, qdot, qddot, lambda, data);
+    solve_with_friction(t, qddot, lambda, data);
     return;
   }
   // only the active constraints take part; an inactive one's λ is 0

@@ -7,6 +7,7 @@
 
 #include "support/joint_loads.hpp"
 #include "support/model_run.hpp"
+#include "unidyn/kinematics/constraint_gradient.hpp"
 
 namespace unidyn {
 namespace {
@@ -42,6 +43,39 @@ TEST(HingedBodies, PinObeysTheGeneralisedThirdLaw) {
     EXPECT_LT(run.at(i, "newton_euler"), 1e-12);
   }
   EXPECT_GT(largest, 0.5);  // the hinge does carry a load
+}
+
+// (8.24) from the loads solved from each pin row in the coordinates alone (not the closed forms
+// of model/joints): F_cA = −F_cB, and the reaction moments M_c − π_P × F_c are equal and opposite
+// and perpendicular to the axis A.e3.
+TEST(HingedBodies, SolvedRowLoadsObeyTheThirdLaw) {
+  const System system = load_model(test::model_path("hinged-bodies-pinned"));
+  GiNaC::exmap state = system.parameter_values();
+  double value = 0.1;
+  for (const auto& q : system.coordinates()) state[q.value] = value += 0.23;
+  const auto number = [&](const Expr& e) {
+    return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(state))).to_double();
+  };
+  const auto vec = [&](const VectorExpr& v) {
+    return Vec3(number(v[0]), number(v[1]), number(v[2]));
+  };
+  const auto p = [&](const char* name) {
+    return Expr(system.parameters[*system.find_parameter(name)].symbol);
+  };
+  const Vec3 arm_A =
+      vec(system.material_point(0, VectorExpr(p("L1"), 0, 0)) - system.bodies[0].center);
+  const Vec3 arm_B =
+      vec(system.material_point(1, VectorExpr(-p("L2"), 0, 0)) - system.bodies[1].center);
+  const Vec3 axis = vec(system.body_basis_vector(0, 3));
+  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+    const ConstraintLoads solved = solve_constraint_loads(system, constraint_row(system, k));
+    const Vec3 fA = vec(solved.body_force[0]), fB = vec(solved.body_force[1]);
+    const Vec3 rA = vec(solved.body_moment[0]) - arm_A.cross(fA);
+    const Vec3 rB = vec(solved.body_moment[1]) - arm_B.cross(fB);
+    EXPECT_LT((fA + fB).norm(), 1e-12) << system.constraints[k].name;
+    EXPECT_LT((rA + rB).norm(), 1e-12) << system.constraints[k].name;
+    EXPECT_LT(std::abs(rA.dot(axis)), 1e-12) << system.constraints[k].name;
+  }
 }
 
 // Without external loads E, G and H_O are constants of both descriptions.

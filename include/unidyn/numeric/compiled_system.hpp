@@ -105,8 +105,8 @@ class CompiledSystem {
                           const Eigen::MatrixXd& C, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
                           CompiledSystemData& data) const;
   // The solve with rough contacts: stick rows in place of their normal rows, friction columns.
-  void solve_with_friction(double t, const Eigen::VectorXd& qdot, Eigen::VectorXd& qddot,
-                           Eigen::VectorXd& lambda, CompiledSystemData& data) const;
+  void solve_with_friction(double t, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
+                           CompiledSystemData& data) const;
   void load_state(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                   std::span<const double> parameters, CompiledSystemData& data) const;
   // Evaluates a tape of inputs [t, q, q̇, p] at the state; returns its outputs (in data).
