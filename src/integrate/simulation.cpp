@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "unidyn/integrate/contacts.hpp"
+#include "unidyn/integrate/cvode.hpp"
 #include "unidyn/integrate/dormand_prince.hpp"
 #include "unidyn/integrate/driver.hpp"
 #include "unidyn/integrate/friction_phases.hpp"
@@ -122,7 +123,10 @@ void watch_euler_charts(const System& system, double t, const Eigen::VectorXd& y
   }
 }
 
-std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunction rhs) {
+// The integrator the options ask for. A given projection goes inside CVODE's step; the explicit
+// methods are projected by the driver's post-step hook instead.
+std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunction rhs,
+                                      std::function<void(double, Eigen::VectorXd&)> projection) {
   if (options.method == "rk4") {
     double h = options.step > 0 ? options.step : options.output_step / 10;
     // a whole number of steps per output interval
@@ -136,7 +140,16 @@ std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunct
     o.max_steps = options.max_steps;
     return std::make_unique<DormandPrince54>(std::move(rhs), o);
   }
-  throw std::invalid_argument("unknown method '" + options.method + "' (expected dopri5 or rk4)");
+  if (options.method == "cvode") {
+    CvodeOptions o;
+    o.rtol = options.rtol;
+    o.atol = options.atol;
+    o.max_steps = options.max_steps;
+    o.projection = std::move(projection);
+    return std::make_unique<CvodeBdf>(std::move(rhs), o);
+  }
+  throw std::invalid_argument("unknown method '" + options.method +
+                              "' (expected dopri5, rk4 or cvode)");
 }
 
 }  // namespace
@@ -315,7 +328,16 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
 
   // Integrate with the projection after every step; rows come through `emit`.
   try {
-    const std::unique_ptr<Stepper> stepper = make_stepper(options, rhs);
+    const bool project = options.project && compiled.constraint_count() > 0;
+    const std::function<void(double, Eigen::VectorXd&)> projection = [&](double t,
+                                                                         Eigen::VectorXd& y) {
+      Eigen::VectorXd yq = y.head(n), yv = y.tail(n);
+      projector.project(t, yq, yv);
+      y << yq, yv;
+    };
+    const bool inside = options.method == "cvode";
+    const std::unique_ptr<Stepper> stepper =
+        make_stepper(options, rhs, project && inside ? projection : nullptr);
     Eigen::VectorXd q = start.q, qdot = start.qdot;
     if (contacts.any()) {
       // the contacts that hold at the start, then onto their manifolds with the rest
@@ -349,13 +371,9 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
       callbacks.events = events;
       callbacks.on_event = on_event;
     }
-    const bool project = options.project && compiled.constraint_count() > 0;
     callbacks.post_step = [&](double t, Eigen::VectorXd& y) {
       watch_euler_charts(system, t, y, summary);
-      if (!project) return;
-      Eigen::VectorXd yq = y.head(n), yv = y.tail(n);
-      projector.project(t, yq, yv);
-      y << yq, yv;
+      if (project && !inside) projection(t, y);
     };
     const IntegrationResult result =
         integrate(*stepper, start.t0, y0, options.t_end, options.output_step, callbacks);

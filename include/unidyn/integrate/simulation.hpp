@@ -16,7 +16,7 @@ namespace unidyn {
 struct SimulationOptions {
   double t_end = 10.0;
   double output_step = 0.01;
-  std::string method = "dopri5";  // dopri5 or rk4
+  std::string method = "dopri5";  // dopri5, rk4 or cvode (BDF, for stiff models)
   double rtol = 1e-10;
   double atol = 1e-12;
   double step = 0.0;  // rk4's step; 0: output_step / 10
