@@ -48,7 +48,12 @@ Reduction eliminate_constraints(const System& full) {
     eliminated = false;
     for (std::size_t c = 0; c < system.constraints.size(); ++c) {
       const Constraint& constraint = system.constraints[c];
-      if (constraint.kind != Constraint::Kind::position) continue;
+      // (§3.8) friction needs the normal force, and a unilateral contact may let go: both keep
+      // their multipliers
+      if (constraint.kind != Constraint::Kind::position || constraint.friction ||
+          constraint.unilateral) {
+        continue;
+      }
       const auto k = solvable_coordinate(system, constraint.expression);
       if (!k) continue;
       // q^k = q^k − Ψ / (∂Ψ/∂q^k), its rate and acceleration by the total derivative
@@ -82,6 +87,12 @@ Reduction eliminate_constraints(const System& full) {
           load.force = subs(load.force, map);
           load.moment = subs(load.moment, map);
         }
+        if (other.friction) {
+          other.friction->dynamic_coefficient = other.friction->dynamic_coefficient.subs(map);
+          other.friction->static_coefficient = other.friction->static_coefficient.subs(map);
+          other.friction->at = subs(other.friction->at, map);
+          other.friction->surface_velocity = subs(other.friction->surface_velocity, map);
+        }
       }
       reduced.initial_values.erase(reduced.initial_values.begin() +
                                    static_cast<std::ptrdiff_t>(*k));
@@ -104,10 +115,12 @@ Reduction eliminate_constraints(const System& full) {
     }
   }
   for (const auto& c : system.constraints) {
-    result.notes.push_back("kept constraint " + c.name +
-                           (c.kind == Constraint::Kind::position
-                                ? ": it is not linear in a coordinate with a constant coefficient"
-                                : ": a velocity constraint"));
+    result.notes.push_back(
+        "kept constraint " + c.name +
+        (c.kind == Constraint::Kind::velocity ? ": a velocity constraint (Routh–Voss, (3.8))"
+         : c.friction   ? ": its friction needs its normal force, which approach II does not give"
+         : c.unilateral ? ": it is unilateral, and its contact may be lost"
+                        : ": it is not linear in a coordinate with a constant coefficient"));
   }
   return result;
 }

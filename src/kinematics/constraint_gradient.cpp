@@ -47,6 +47,17 @@ std::vector<Slot> moving_slots(const System& system) {
   return slots;
 }
 
+// Whether each coordinate moves at most one slot.
+bool coordinates_separate(const std::vector<Slot>& slots) {
+  if (slots.empty()) return true;
+  for (std::size_t i = 0; i < slots[0].partial.size(); ++i) {
+    int moved = 0;
+    for (const Slot& slot : slots) moved += moves({slot.partial[i]}) ? 1 : 0;
+    if (moved > 1) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::vector<Expr> constraint_row(const System& system, std::size_t k) {
@@ -70,10 +81,11 @@ ConstraintLoads solve_constraint_loads(const System& system, const std::vector<E
     if (system.constraints[k].parametrisation) extra.push_back(constraint_row(system, k));
   }
   const auto columns = static_cast<unsigned>(3 * slots.size() + extra.size());
-  // fewer coordinates than that is fine for one moving particle (kept in a plane, say): the
-  // least-norm x, the load along the directions its coordinates can move it
-  const bool one_particle = slots.size() == 1 && slots[0].kind == Slot::Kind::particle;
-  if (columns != n && !(one_particle && extra.empty() && columns > n)) {
+  // fewer coordinates than that is fine when each coordinate moves one thing alone (a particle
+  // kept in a plane, say): the least-norm x, each load along the directions its coordinates move
+  // it. (A coordinate that moves several — a pendulum's angle moving both bobs — leaves the split
+  // of the load between them undetermined.)
+  if (columns != n && !(extra.empty() && columns > n && coordinates_separate(slots))) {
     throw std::invalid_argument(
         "a constraint's force on a particle or body needs the coordinates to fix the moving "
         "positions and orientations one to one (3 per moving particle, 3 per moving centre, 3 per "

@@ -2,6 +2,9 @@
 // the same motion as approach I.
 #include "unidyn/equations/reduction.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "support/model_run.hpp"
 #include "support/oracles.hpp"
 #include "unidyn/symbolic/printing.hpp"
@@ -71,39 +74,77 @@ TEST(ApproachTwo, NonlinearConstraintIsKept) {
   EXPECT_NE(reduction.notes[0].find("kept constraint rod"), std::string::npos);
 }
 
-// Approaches I and II give the same motion (helix and pendulum-cart over 2 s)
-// Bodies too: eliminating a ball joint's rows (linear in the centre's coordinates) reaches the
-// centres, rotations, body forces, moments and the remaining rows' loads.
+// Runs a model by approach I and by approach II over 2 s (t_end shortened) and compares every
+// column the two share — the coordinates that remain, their rates, the multipliers of the
+// constraints that remain — to `tolerance` (relative to 1 + |value|); returns the reduction.
+Reduction expect_same_motion(const std::string& name, double tolerance) {
+  const System full = load_model(test::model_path(name));
+  Reduction reduction = eliminate_constraints(full);
+  const System& reduced = reduction.system;
+  SimulationOptions options = simulation_options(full.simulate);
+  options.t_end = std::min(options.t_end, 2.0);
+  std::vector<std::vector<double>> rows_full, rows_reduced;
+  const auto s1 =
+      simulate(full, CompiledSystem(full, lagrange_equations(full)), initial_state(full, {}),
+               options, [&](const std::vector<double>& row) { rows_full.push_back(row); });
+  const auto s2 = simulate(reduced, CompiledSystem(reduced, lagrange_equations(reduced)),
+                           initial_state(reduced, {}), options,
+                           [&](const std::vector<double>& row) { rows_reduced.push_back(row); });
+  EXPECT_TRUE(s1.ok && s2.ok) << name << ": " << s1.message << s2.message;
+  EXPECT_EQ(rows_full.size(), rows_reduced.size()) << name;
+  if (rows_full.size() != rows_reduced.size()) return reduction;
+  const std::vector<std::string> columns_full = simulation_columns(full);
+  const std::vector<std::string> columns_reduced = simulation_columns(reduced);
+  std::size_t shared = 0;
+  for (std::size_t j = 0; j < columns_reduced.size(); ++j) {
+    const auto i = std::find(columns_full.begin(), columns_full.end(), columns_reduced[j]) -
+                   columns_full.begin();
+    if (i == static_cast<std::ptrdiff_t>(columns_full.size())) continue;
+    ++shared;
+    for (std::size_t row = 0; row < rows_full.size(); ++row) {
+      const double expected = rows_full[row][static_cast<std::size_t>(i)];
+      EXPECT_NEAR(rows_reduced[row][j], expected, tolerance * (1 + std::abs(expected)))
+          << name << " " << columns_reduced[j] << " t = " << rows_full[row][0];
+    }
+  }
+  EXPECT_GT(shared, 2u) << name;
+  // and the same energy
+  EXPECT_NEAR(s1.energy_initial, s2.energy_initial, 1e-12 * std::abs(s1.energy_initial)) << name;
+  return reduction;
+}
+
+// Approaches I and II give the same motion (helix and pendulum-cart). Bodies too: eliminating a
+// ball joint's rows (linear in the centre's coordinates) reaches the centres, rotations, body
+// forces, moments and the remaining rows' loads.
 TEST(ApproachTwo, SameMotionAsApproachOne) {
   for (const std::string name :
        {"helix", "pendulum-cart", "unbalanced-rotor-pinned", "hinged-bodies-pinned"}) {
-    const System full = load_model(test::model_path(name));
-    const System reduced = eliminate_constraints(full).system;
-    SimulationOptions options = simulation_options(full.simulate);
-    options.t_end = 2.0;
-    std::vector<std::vector<double>> rows_full, rows_reduced;
-    const auto s1 =
-        simulate(full, CompiledSystem(full, lagrange_equations(full)), initial_state(full, {}),
-                 options, [&](const std::vector<double>& row) { rows_full.push_back(row); });
-    const auto s2 = simulate(reduced, CompiledSystem(reduced, lagrange_equations(reduced)),
-                             initial_state(reduced, {}), options,
-                             [&](const std::vector<double>& row) { rows_reduced.push_back(row); });
-    ASSERT_TRUE(s1.ok && s2.ok);
-    ASSERT_EQ(rows_full.size(), rows_reduced.size());
-    // the reduced model's coordinates are the full model's, minus the eliminated ones
-    const auto& q_full = full.coordinates();
-    const auto& q_reduced = reduced.coordinates();
-    for (std::size_t j = 0; j < q_reduced.size(); ++j) {
-      std::size_t i = 0;
-      while (q_full[i].name != q_reduced[j].name) ++i;
-      for (std::size_t row = 0; row < rows_full.size(); ++row) {
-        EXPECT_NEAR(rows_full[row][1 + i], rows_reduced[row][1 + j], 1e-9)
-            << name << " " << q_full[i].name;
-      }
-    }
-    // and the same energy
-    EXPECT_NEAR(s1.energy_initial, s2.energy_initial, 1e-12 * std::abs(s1.energy_initial));
+    expect_same_motion(name, 1e-9);
   }
+}
+
+// (3.8), (10.24): approach II with velocity constraints is the Routh–Voss form — the integrable
+// constraints eliminated, the non-integrable ones kept with their multipliers, which equal
+// approach I's. A constraint with friction keeps its multiplier (its normal force, §3.8), and so
+// does a unilateral one (it may let go); eliminating them would silently drop the friction.
+TEST(ApproachTwo, RouthVossKeepsVelocityConstraintsFrictionAndContacts) {
+  const auto kept = [](const Reduction& r, const std::string& what) {
+    return std::any_of(r.notes.begin(), r.notes.end(),
+                       [&](const std::string& n) { return n.find(what) != std::string::npos; });
+  };
+  const Reduction disk = expect_same_motion("rolling-disk", 1e-8);
+  EXPECT_TRUE(kept(disk, "eliminated x3 by constraint height"));
+  EXPECT_TRUE(kept(disk, "kept constraint pi1: a velocity constraint"));
+  const Reduction cart = expect_same_motion("braking-cart", 1e-8);
+  EXPECT_TRUE(kept(cart, "eliminated z1 by constraint ground1"));
+  EXPECT_TRUE(kept(cart, "kept constraint ground3: its friction needs its normal force"));
+  const Reduction ball = expect_same_motion("sphere-slide-roll", 1e-8);
+  EXPECT_TRUE(kept(ball, "kept constraint table: its friction"));
+  for (const std::string name : {"stick-slip-oscillator", "rotating-cone", "roller-coaster"}) {
+    expect_same_motion(name, 1e-8);
+  }
+  const Reduction string = expect_same_motion("string-through-hole", 1e-8);
+  EXPECT_TRUE(kept(string, "kept constraint string: it is unilateral"));
 }
 
 }  // namespace

@@ -21,8 +21,9 @@ struct ConstraintLoads {
 // velocity form Σ (g · v + f · v̄ + h · ω) of the constraint. Unique when the coordinates map
 // one-to-one to the moving positions and orientations (3 coordinates per moving particle, 3 per
 // moving centre, 3 per turning body, and one per unit norm of Euler parameters, whose row joins the
-// system with a multiplier of its own). One moving particle with fewer coordinates (kept in a
-// plane, say) gets the least-norm solution: the load along the directions it can move. Throws
+// system with a multiplier of its own). With fewer coordinates than that, when each coordinate
+// moves one particle or body alone (particles kept in planes, say; not with Euler parameters), the
+// least-norm solution: each load along the directions its coordinates move it. Throws
 // std::invalid_argument otherwise. What does not move gets 0.
 ConstraintLoads solve_constraint_loads(const System& system, const std::vector<Expr>& a);
 
