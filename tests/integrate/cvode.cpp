@@ -17,10 +17,7 @@ namespace {
 using test::vector;
 
 CvodeOptions tolerances(double rtol, double atol) {
-  CvodeOptions options;
-  options.rtol = rtol;
-  options.atol = atol;
-  return options;
+  return test::tolerances<CvodeOptions>(rtol, atol);
 }
 
 TEST(Cvode, ExponentialDecayMatchesClosedForm) {

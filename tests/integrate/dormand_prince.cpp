@@ -20,10 +20,7 @@ namespace {
 using test::vector;
 
 DormandPrinceOptions tolerances(double rtol, double atol) {
-  DormandPrinceOptions options;
-  options.rtol = rtol;
-  options.atol = atol;
-  return options;
+  return test::tolerances<DormandPrinceOptions>(rtol, atol);
 }
 
 DormandPrinceOptions fixed(double h) {

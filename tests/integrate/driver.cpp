@@ -31,10 +31,7 @@ IntegrationCallbacks recorder(std::vector<Row>& rows) {
 }
 
 DormandPrinceOptions tolerances(double rtol, double atol) {
-  DormandPrinceOptions options;
-  options.rtol = rtol;
-  options.atol = atol;
-  return options;
+  return test::tolerances<DormandPrinceOptions>(rtol, atol);
 }
 
 // Rows at t0 + k h, each computed as such, then t_end exactly, with no near-duplicate before it.

@@ -75,6 +75,15 @@ struct Kepler {
   }
 };
 
+// Options of an adaptive stepper (DormandPrinceOptions, CvodeOptions) with the given tolerances.
+template <class Options>
+Options tolerances(double rtol, double atol) {
+  Options options;
+  options.rtol = rtol;
+  options.atol = atol;
+  return options;
+}
+
 // Step from (t0, y0) to t_end; returns the state there.
 inline Eigen::VectorXd solve(Stepper& stepper, double t0, const Eigen::VectorXd& y0, double t_end) {
   stepper.initialize(t0, y0);
