@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 #include "unidyn/equations/equivalence.hpp"
 #include "unidyn/equations/lagrange.hpp"
@@ -72,6 +73,14 @@ std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::st
     overrides.emplace_back(s.substr(0, eq), value);
   }
   return overrides;
+}
+
+// The text of the model file named on the command line (empty when it cannot be read).
+std::string read_model_text(const ModelCommands& c) {
+  std::ifstream in(resolve_model(c.model));
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 // The model named on the command line; with --reduced, its approach-II form (the notes on what
@@ -196,7 +205,12 @@ int run_simulate(const ModelCommands& c) {
   const SimulationStart start = initial_state(system, parse_sets(c.sets));
   const SimulationOptions options = options_for(system, c);
   const auto clock_start = std::chrono::steady_clock::now();
-  const CompiledSystem compiled(system, lagrange_equations(system));
+  CompileOptions compile_options;
+  compile_options.native = c.evaluation == "native";
+  // the cache of native code is keyed by the model's text (and how it was reduced)
+  compile_options.native_options.key =
+      std::string(c.reduced ? "reduced\n" : "full\n") + read_model_text(c);
+  const CompiledSystem compiled(system, lagrange_equations(system), compile_options);
   const double derive_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
 
@@ -225,6 +239,7 @@ int run_simulate(const ModelCommands& c) {
              "right-hand sides\n",
              derive_seconds, run_seconds, s.stats.accepted_steps, s.stats.rejected_steps,
              s.stats.rhs_evaluations);
+  fmt::print(out, "  evaluation: {}\n", compiled.evaluation());
   if (s.has_energy) {
     fmt::print(out, "  energy: initial {:.12g}, relative drift {:.3g}\n", s.energy_initial,
                s.energy_relative_drift);
@@ -315,6 +330,11 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.simulate->add_option("--rtol", c.rtol, "relative tolerance (dopri5)")->check(kPositive);
   c.simulate->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
   c.simulate->add_flag("--reduced", c.reduced, "simulate the approach-II equations");
+  c.simulate
+      ->add_option("--evaluation", c.evaluation,
+                   "native (compiled C++, cached; the tape when no compiler) | tape")
+      ->check(CLI::IsMember({"native", "tape"}))
+      ->capture_default_str();
 
   c.check = app.add_subcommand("check", "Newton vs Lagrange agreement, constraint consistency");
   c.check->add_option("model", c.model, "MODEL file or bundled model name")->required();

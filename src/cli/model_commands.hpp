@@ -22,6 +22,7 @@ struct ModelCommands {
   std::string integrator;
   std::string model_name;
   bool reduced = false;
+  std::string evaluation = "native";  // simulate: native (when a compiler is present) or tape
 };
 
 void add_model_commands(CLI::App& app, ModelCommands& commands);

@@ -64,7 +64,8 @@ Tape compile_friction(const System& system, const std::vector<FrictionContact>& 
 
 }  // namespace
 
-CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& equations)
+CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& equations,
+                               const CompileOptions& options)
     : n_(system.coordinates().size()),
       m_(system.constraints.size()),
       p_(system.parameters.size()),
@@ -82,6 +83,39 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
     is_position_.push_back(c.kind == Constraint::Kind::position);
     redundant_coordinates_ = redundant_coordinates_ || c.parametrisation;
   }
+  if (!options.native) return;
+  // the four tapes as one library; the tape stays when it cannot be had
+  try {
+    native_ = NativeLibrary::build({{"unidyn_dynamics", &dynamics_},
+                                    {"unidyn_constraints", &constraints_},
+                                    {"unidyn_observer", &observer_},
+                                    {"unidyn_friction", &friction_}},
+                                   options.native_options);
+    native_functions_ = {
+        native_->function("unidyn_dynamics"), native_->function("unidyn_constraints"),
+        native_->function("unidyn_observer"), native_->function("unidyn_friction")};
+    evaluation_ = native_->cached()
+                      ? "native code (cached: " + native_->path() + ")"
+                      : "native code (compiled in " + std::to_string(native_->compile_seconds()) +
+                            " s: " + native_->path() + ")";
+  } catch (const NativeCodeError& error) {
+    native_.reset();
+    evaluation_ = std::string("tape (") + error.what() + ")";
+  }
+}
+
+void CompiledSystem::run(const Tape& tape, std::span<const double> inputs,
+                         std::span<double> outputs, CompiledSystemData& data) const {
+  if (native_) {
+    const Tape* tapes[] = {&dynamics_, &constraints_, &observer_, &friction_};
+    for (std::size_t k = 0; k < 4; ++k) {
+      if (tapes[k] != &tape) continue;
+      if (inputs.size() != tape.input_count() || outputs.size() != tape.output_count()) break;
+      native_functions_[k](inputs.data(), outputs.data());
+      return;
+    }
+  }
+  tape.evaluate(inputs, outputs, data.workspace);
 }
 
 CompiledSystemData CompiledSystem::make_data() const {
@@ -123,7 +157,7 @@ const double* CompiledSystem::evaluate_at(const Tape& tape, double t, const Eige
                                           CompiledSystemData& data) const {
   load_state(t, q, qdot, parameters, data);
   const std::span<const double> inputs(data.inputs.data(), 1 + 2 * n_ + p_);
-  tape.evaluate(inputs, std::span(data.outputs.data(), tape.output_count()), data.workspace);
+  run(tape, inputs, std::span(data.outputs.data(), tape.output_count()), data);
   return data.outputs.data();
 }
 
@@ -257,7 +291,7 @@ void CompiledSystem::observe(double t, const Eigen::VectorXd& q, const Eigen::Ve
   }
   for (Eigen::Index i = 0; i < lambda.size(); ++i) in[k++] = lambda[i];
   for (double p : parameters) in[k++] = p;
-  observer_.evaluate(std::span<const double>(in.data(), k), values, data.workspace);
+  run(observer_, std::span<const double>(in.data(), k), values, data);
 }
 
 }  // namespace unidyn

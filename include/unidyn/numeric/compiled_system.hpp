@@ -9,11 +9,15 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <array>
+#include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/model/system.hpp"
+#include "unidyn/numeric/native_code.hpp"
 #include "unidyn/numeric/tape.hpp"
 
 namespace unidyn {
@@ -56,9 +60,22 @@ struct CompiledSystemData {
   std::vector<Eigen::Vector3d> contact_force;
 };
 
+// How the compiled equations are evaluated.
+struct CompileOptions {
+  // Native code (numeric/native_code.hpp) when a compiler is at hand, else the tape.
+  bool native = false;
+  NativeOptions native_options;
+};
+
 class CompiledSystem {
  public:
-  CompiledSystem(const System& system, const EquationsOfMotion& equations);
+  CompiledSystem(const System& system, const EquationsOfMotion& equations,
+                 const CompileOptions& options = {});
+
+  // Whether native code evaluates the equations, and how that came about: "tape", "native code
+  // (compiled in 0.41 s: PATH)", "native code (cached: PATH)" or "tape (native code failed: ...)".
+  bool native() const { return native_ != nullptr; }
+  const std::string& evaluation() const { return evaluation_; }
 
   std::size_t coordinate_count() const { return n_; }
   std::size_t constraint_count() const { return m_; }
@@ -114,6 +131,10 @@ class CompiledSystem {
                             const Eigen::VectorXd& qdot, std::span<const double> parameters,
                             CompiledSystemData& data) const;
 
+  // outputs = tape(inputs), by its native function when there is one.
+  void run(const Tape& tape, std::span<const double> inputs, std::span<double> outputs,
+           CompiledSystemData& data) const;
+
   std::size_t n_ = 0, m_ = 0, p_ = 0;
   Tape dynamics_;     // [t, q, q̇, p] → M, f, A, b
   Tape constraints_;  // [t, q, q̇, p] → A, e, Ψ
@@ -125,6 +146,10 @@ class CompiledSystem {
   // Some coordinates are redundant (Euler parameters): M is semi-definite, whatever round-off
   // makes of its Cholesky factor, and the saddle-point system is solved instead.
   bool redundant_coordinates_ = false;
+  // The tapes as native functions (dynamics, constraints, observer, friction), when built.
+  std::shared_ptr<const NativeLibrary> native_;
+  std::array<NativeFunction, 4> native_functions_{};
+  std::string evaluation_ = "tape";
 };
 
 }  // namespace unidyn

@@ -1,0 +1,76 @@
+// Native code for compiled equations: a tape printed as a C++ function, compiled by the system
+// compiler into a shared library that is cached on disk under the hash of its source, and loaded.
+// The function performs the tape's operations in the tape's order with IEEE semantics (no fast
+// math, no contraction into fused multiply-adds), so it gives the tape's results.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "unidyn/numeric/tape.hpp"
+
+namespace unidyn {
+
+// A compiled tape: outputs[k] = output k at inputs (sizes as the tape's).
+using NativeFunction = void (*)(const double* inputs, double* outputs);
+
+// The C++ source of `extern "C" void <name>(const double* in, double* out)` evaluating `tape`.
+std::string tape_source(const Tape& tape, std::string_view name);
+
+struct NativeOptions {
+  // The compiler: empty takes $CXX, else c++.
+  std::string compiler;
+  // Where libraries are kept: empty takes $UNIDYN_CACHE_DIR, else $XDG_CACHE_HOME/unidyn, else
+  // $HOME/.cache/unidyn, else /tmp/unidyn-cache.
+  std::string cache_directory;
+  std::string flags = "-std=c++17 -O2 -ffp-contract=off -fno-fast-math -fPIC -shared";
+  // What the cache is keyed by, besides the functions' names and sizes and the command: empty
+  // takes the generated source. A model's text is the better key: the source of one model can
+  // differ from run to run in the order GiNaC gives its (equal) expressions.
+  std::string key;
+};
+
+// Native code cannot be had: no compiler, a failed compilation (with its diagnostics), a library
+// that does not load.
+class NativeCodeError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A loaded library of compiled tapes. Immutable; its functions stay valid while it lives.
+class NativeLibrary {
+ public:
+  // Generate the functions' source, compile it unless a library of the same source and command
+  // is cached, and load it. Throws NativeCodeError.
+  static std::shared_ptr<const NativeLibrary> build(
+      const std::vector<std::pair<std::string, const Tape*>>& functions,
+      const NativeOptions& options = {});
+
+  ~NativeLibrary();
+  NativeLibrary(const NativeLibrary&) = delete;
+  NativeLibrary& operator=(const NativeLibrary&) = delete;
+
+  // The function of that name; throws NativeCodeError when the library has none.
+  NativeFunction function(const std::string& name) const;
+  const std::string& path() const { return path_; }
+  // Whether the library came from the cache, and how long compiling it took (0 when cached).
+  bool cached() const { return cached_; }
+  double compile_seconds() const { return compile_seconds_; }
+  // Size of the generated source, in bytes.
+  std::size_t source_bytes() const { return source_bytes_; }
+
+ private:
+  NativeLibrary() = default;
+  void* handle_ = nullptr;
+  std::string path_;
+  bool cached_ = false;
+  double compile_seconds_ = 0.0;
+  std::size_t source_bytes_ = 0;
+};
+
+}  // namespace unidyn
