@@ -194,8 +194,8 @@ SimulationOptions options_for(const System& system, const ModelCommands& c) {
   if ((o.t_end / o.output_step) > 1e8) {
     throw std::invalid_argument("--t-end / --output-step asks for more than 10^8 rows");
   }
-  if (o.method != "dopri5" && o.method != "rk4" && o.method != "cvode") {
-    throw std::invalid_argument("--method must be dopri5, rk4 or cvode");
+  if (o.method != "dopri5" && o.method != "rk4" && o.method != "cvode" && o.method != "rattle") {
+    throw std::invalid_argument("--method must be dopri5, rk4, cvode or rattle");
   }
   return o;
 }
@@ -326,7 +326,7 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.simulate->add_option("-o,--output", c.output, "CSV file (default: standard output)");
   c.simulate->add_option("--t-end", c.t_end, "end time")->check(kPositive);
   c.simulate->add_option("--output-step", c.output_step, "time between rows")->check(kPositive);
-  c.simulate->add_option("--method", c.integrator, "dopri5 | rk4 | cvode");
+  c.simulate->add_option("--method", c.integrator, "dopri5 | rk4 | cvode | rattle");
   c.simulate->add_option("--rtol", c.rtol, "relative tolerance (dopri5)")->check(kPositive);
   c.simulate->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
   c.simulate->add_flag("--reduced", c.reduced, "simulate the approach-II equations");

@@ -4,13 +4,16 @@
 #include <Eigen/Cholesky>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <sstream>
 
+#include "unidyn/equations/lagrange.hpp"
 #include "unidyn/integrate/contacts.hpp"
 #include "unidyn/integrate/cvode.hpp"
 #include "unidyn/integrate/dormand_prince.hpp"
 #include "unidyn/integrate/driver.hpp"
 #include "unidyn/integrate/friction_phases.hpp"
+#include "unidyn/integrate/rattle.hpp"
 #include "unidyn/integrate/rk4.hpp"
 #include "unidyn/rotation/euler_angles.hpp"
 
@@ -123,16 +126,18 @@ void watch_euler_charts(const System& system, double t, const Eigen::VectorXd& y
   }
 }
 
+// The step of a fixed-step method: `step`, else output_step / 10, made a whole number of steps
+// per output interval.
+double fixed_step(const SimulationOptions& options) {
+  const double h = options.step > 0 ? options.step : options.output_step / 10;
+  return options.output_step / std::ceil(options.output_step / h - 1e-9);
+}
+
 // The integrator the options ask for. A given projection goes inside CVODE's step; the explicit
 // methods are projected by the driver's post-step hook instead.
 std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunction rhs,
                                       std::function<void(double, Eigen::VectorXd&)> projection) {
-  if (options.method == "rk4") {
-    double h = options.step > 0 ? options.step : options.output_step / 10;
-    // a whole number of steps per output interval
-    h = options.output_step / std::ceil(options.output_step / h - 1e-9);
-    return std::make_unique<Rk4>(std::move(rhs), h);
-  }
+  if (options.method == "rk4") return std::make_unique<Rk4>(std::move(rhs), fixed_step(options));
   if (options.method == "dopri5") {
     DormandPrinceOptions o;
     o.rtol = options.rtol;
@@ -149,7 +154,7 @@ std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunct
     return std::make_unique<CvodeBdf>(std::move(rhs), o);
   }
   throw std::invalid_argument("unknown method '" + options.method +
-                              "' (expected dopri5, rk4 or cvode)");
+                              "' (expected dopri5, rk4, cvode or rattle)");
 }
 
 }  // namespace
@@ -336,8 +341,18 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
       y << yq, yv;
     };
     const bool inside = options.method == "cvode";
-    const std::unique_ptr<Stepper> stepper =
-        make_stepper(options, rhs, project && inside ? projection : nullptr);
+    // RATTLE keeps the constraints itself (a projection would spoil its symplecticity)
+    const bool symplectic = options.method == "rattle";
+    std::optional<CompiledNaturalSystem> natural;
+    std::unique_ptr<Stepper> stepper;
+    if (symplectic) {
+      natural.emplace(system, lagrange_equations(system));
+      RattleOptions o;
+      o.step = fixed_step(options);
+      stepper = std::make_unique<Rattle>(*natural, start.parameters, o);
+    } else {
+      stepper = make_stepper(options, rhs, project && inside ? projection : nullptr);
+    }
     Eigen::VectorXd q = start.q, qdot = start.qdot;
     if (contacts.any()) {
       // the contacts that hold at the start, then onto their manifolds with the rest
@@ -373,7 +388,7 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     }
     callbacks.post_step = [&](double t, Eigen::VectorXd& y) {
       watch_euler_charts(system, t, y, summary);
-      if (project && !inside) projection(t, y);
+      if (project && !inside && !symplectic) projection(t, y);
     };
     const IntegrationResult result =
         integrate(*stepper, start.t0, y0, options.t_end, options.output_step, callbacks);

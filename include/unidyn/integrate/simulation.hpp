@@ -16,10 +16,11 @@ namespace unidyn {
 struct SimulationOptions {
   double t_end = 10.0;
   double output_step = 0.01;
-  std::string method = "dopri5";  // dopri5, rk4 or cvode (BDF, for stiff models)
+  // dopri5, rk4, cvode (BDF, for stiff models) or rattle (symplectic, natural conservative models)
+  std::string method = "dopri5";
   double rtol = 1e-10;
   double atol = 1e-12;
-  double step = 0.0;  // rk4's step; 0: output_step / 10
+  double step = 0.0;  // rk4's and rattle's step; 0: output_step / 10
   bool project = true;
   std::size_t max_steps = 100000000;
 };
