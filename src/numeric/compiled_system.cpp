@@ -104,6 +104,11 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
   }
 }
 
+std::size_t CompiledSystem::instruction_count() const {
+  return dynamics_.instruction_count() + constraints_.instruction_count() +
+         observer_.instruction_count() + friction_.instruction_count();
+}
+
 void CompiledSystem::run(const Tape& tape, std::span<const double> inputs,
                          std::span<double> outputs, CompiledSystemData& data) const {
   if (native_) {

@@ -76,6 +76,9 @@ class CompiledSystem {
   // (compiled in 0.41 s: PATH)", "native code (cached: PATH)" or "tape (native code failed: ...)".
   bool native() const { return native_ != nullptr; }
   const std::string& evaluation() const { return evaluation_; }
+  // The size of the compiled equations: tape instructions, and bytes of native source (0 without).
+  std::size_t instruction_count() const;
+  std::size_t native_source_bytes() const { return native_ ? native_->source_bytes() : 0; }
 
   std::size_t coordinate_count() const { return n_; }
   std::size_t constraint_count() const { return m_; }

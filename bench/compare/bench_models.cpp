@@ -1,0 +1,101 @@
+// Benchmark models and state conversions (bench/MODELS.md).
+#include "bench_models.hpp"
+
+#include <stdexcept>
+
+#include "unidyn/io/model_file.hpp"
+#include "unidyn/rotation/euler_parameters.hpp"
+
+namespace unidyn::bench {
+namespace {
+
+// The Euler angles of a body model: its first three coordinates.
+Vec3 angles_of(const Eigen::VectorXd& v) {
+  return {v[0], v[1], v[2]};
+}
+
+}  // namespace
+
+std::string pendulum_text(int links) {
+  std::string text = "unidyn: 1\nname: pendulum-" + std::to_string(links) +
+                     "\nparameters: {m: 1.0, L: 1.0, g: 9.81}\ncoordinates: [";
+  for (int k = 1; k <= links; ++k) text += (k > 1 ? ", q" : "q") + std::to_string(k);
+  text += "]\nparticles:\n";
+  std::string theta;
+  for (int k = 1; k <= links; ++k) {
+    theta += (k > 1 ? " + q" : "q") + std::to_string(k);
+    text += "  P" + std::to_string(k) + ": {mass: m, position: \"" +
+            (k > 1 ? "P" + std::to_string(k - 1) + ".position + " : std::string()) + "L*[sin(" +
+            theta + "), -cos(" + theta + "), 0]\"}\n";
+  }
+  text += "forces:\n  - gravity: -g*E2\ninitial: {q1: 0.5";
+  if (links > 1) text += ", q2: 0.0";
+  text += "}\nsimulate: {t_end: 100, output_step: 1, rtol: 1e-10}\n";
+  return text;
+}
+
+BenchModel bench_model(const std::string& name, const std::string& models) {
+  if (name.starts_with("pendulum-")) {
+    const int links = std::stoi(name.substr(9));
+    if (links < 1 || links > 50) throw std::invalid_argument("pendulum-N needs 1 <= N <= 50");
+    return {name, parse_model(pendulum_text(links), name + ".yaml"), std::nullopt};
+  }
+  if (name == "heavy-top") {
+    return {name, load_model(models + "/heavy-top.yaml"), EulerSet::parse("3-1-3")};
+  }
+  if (name == "torque-free") {
+    return {name, load_model(models + "/torque-free-body.yaml"), EulerSet::parse("3-2-1")};
+  }
+  if (name == "rolling-disk") return {name, load_model(models + "/rolling-disk.yaml"), {}};
+  if (name == "kepler") return {name, load_model(models + "/kepler.yaml"), {}};
+  throw std::invalid_argument("unknown benchmark model " + name);
+}
+
+void from_peer_state(const BenchModel& model, const Eigen::VectorXd& peer, Eigen::VectorXd& q,
+                     Eigen::VectorXd& qdot) {
+  const auto n = static_cast<Eigen::Index>(model.system.coordinates().size());
+  if (!model.euler) {
+    q = peer.head(n);
+    qdot = peer.tail(n);
+    return;
+  }
+  // Q from the quaternion, the angles of Q, ω = Q ω_b, the angle rates of ω
+  const Tensor Q = rotation_tensor(EulerParameters{peer[0], {peer[1], peer[2], peer[3]}});
+  const Vec3 angles = euler_angles(*model.euler, Q).angles;
+  const Vec3 rates = euler_angle_rates(*model.euler, angles, Q * peer.segment<3>(4));
+  q = Eigen::VectorXd::Zero(n);
+  qdot = Eigen::VectorXd::Zero(n);
+  q.head<3>() = angles;
+  qdot.head<3>() = rates;
+}
+
+Eigen::VectorXd to_peer_state(const BenchModel& model, const Eigen::VectorXd& q,
+                              const Eigen::VectorXd& qdot) {
+  if (!model.euler) {
+    Eigen::VectorXd peer(q.size() + qdot.size());
+    peer << q, qdot;
+    return peer;
+  }
+  const Tensor Q = rotation_tensor(*model.euler, angles_of(q));
+  const EulerParameters p = euler_parameters(Q);
+  const Vec3 omega_b =
+      Q.transpose() * angular_velocity(*model.euler, angles_of(q), angles_of(qdot));
+  Eigen::VectorXd peer(7);
+  peer << p.e0, p.e, omega_b;
+  return peer;
+}
+
+Eigen::VectorXd to_peer_acceleration(const BenchModel& model, const Eigen::VectorXd& q,
+                                     const Eigen::VectorXd& qdot, const Eigen::VectorXd& qddot) {
+  if (!model.euler) return qddot;
+  // ω̇ = G(θ) θ̈ + (dG/dt) θ̇, the second term by a central difference along θ̇; ω̇_b = Qᵀ ω̇
+  const Vec3 angles = angles_of(q), rates = angles_of(qdot);
+  const double eps = 1e-6 / (1.0 + rates.norm());
+  const Vec3 along = (angular_velocity(*model.euler, angles + eps * rates, rates) -
+                      angular_velocity(*model.euler, angles - eps * rates, rates)) /
+                     (2 * eps);
+  const Vec3 omega_dot = angular_velocity(*model.euler, angles, angles_of(qddot)) + along;
+  return rotation_tensor(*model.euler, angles).transpose() * omega_dot;
+}
+
+}  // namespace unidyn::bench

@@ -1,0 +1,355 @@
+#!/usr/bin/env python3
+"""Side-by-side benchmarks of unidyn against SymPy mechanics, MuJoCo and Simbody.
+
+Usage: python3 bench/run.py BUILD_DIR [--quick]
+
+BUILD_DIR holds the built benchmark programs (bench/unidyn_bench, bench/peers/peer_mujoco,
+bench/peers/peer_simbody). Every figure below is measured in this one run; the tables go to
+standard output and to bench/RESULTS.md. --quick shrinks the sweeps (for a smoke test).
+
+The models are those of bench/MODELS.md. Each comparison first checks that the tools compute the
+same thing (accelerations at random states, final states against a tight reference) and prints
+the largest disagreement next to the timing.
+"""
+
+import argparse
+import datetime
+import json
+import math
+import os
+import platform
+import random
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+
+
+# ---------------------------------------------------------------------------------------------
+# Running the programs
+
+def run(command, stdin=None, timeout=1800):
+    """Run a command; its standard output (raises on a non-zero exit)."""
+    result = subprocess.run(command, input=stdin, capture_output=True, text=True, timeout=timeout)
+    if result.returncode != 0:
+        raise RuntimeError(f"{' '.join(command)} failed ({result.returncode}): "
+                           f"{result.stderr.strip()[:500]}")
+    return result.stdout
+
+
+def run_json(command, stdin=None, timeout=1800):
+    """The last line of a command's output, read as JSON."""
+    return json.loads(run(command, stdin, timeout).strip().splitlines()[-1])
+
+
+def rhs_output(text):
+    """Accelerations (one list per state) and ns_per_eval from a `rhs` run."""
+    rows, ns = [], None
+    for line in text.splitlines():
+        fields = line.split()
+        if not fields:
+            continue
+        if fields[0] == "ns_per_eval":
+            ns = float(fields[1])
+        elif fields[0] != "evaluation":
+            rows.append([float(x) for x in fields])
+    return rows, ns
+
+
+def max_relative_difference(a_rows, b_rows):
+    """Largest |a − b| / (1 + |b|) over matching rows."""
+    worst = 0.0
+    for a, b in zip(a_rows, b_rows):
+        for x, y in zip(a, b):
+            worst = max(worst, abs(x - y) / (1.0 + abs(y)))
+    return worst
+
+
+# ---------------------------------------------------------------------------------------------
+# States
+
+def pendulum_states(n, count, rng):
+    """Random (q, q̇) of pendulum-n."""
+    return [[rng.uniform(-1, 1) for _ in range(n)] + [rng.uniform(-1, 1) for _ in range(n)]
+            for _ in range(count)]
+
+
+def top_euler_states(count, rng):
+    """Random 3-1-3 angles and rates of the heavy top, away from θ = 0."""
+    return [[rng.uniform(-3, 3), rng.uniform(0.3, 2.8), rng.uniform(-3, 3),
+             rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(20, 60)] for _ in range(count)]
+
+
+def disk_states(count, rng):
+    """Random states of the rolling disk that satisfy its three constraints."""
+    R = 0.15
+    states = []
+    for _ in range(count):
+        psi, theta, phi = rng.uniform(-3, 3), rng.uniform(0.5, 2.6), rng.uniform(-3, 3)
+        dpsi, dtheta, dphi = rng.uniform(-2, 2), rng.uniform(-1, 1), rng.uniform(5, 15)
+        # ω = ψ̇ E3 + θ̇ (line of nodes) + φ̇ e3 for 3-1-3 angles
+        nodes = (math.cos(psi), math.sin(psi), 0.0)
+        e3 = (math.sin(psi) * math.sin(theta), -math.cos(psi) * math.sin(theta), math.cos(theta))
+        w = [dpsi * (0, 0, 1)[k] + dtheta * nodes[k] + dphi * e3[k] for k in range(3)]
+        # contact point π = R (cos θ sin ψ, −cos θ cos ψ, −sin θ); v̄ = −ω × π
+        p = (R * math.cos(theta) * math.sin(psi), -R * math.cos(theta) * math.cos(psi),
+             -R * math.sin(theta))
+        cross = (w[1] * p[2] - w[2] * p[1], w[2] * p[0] - w[0] * p[2], w[0] * p[1] - w[1] * p[0])
+        v = [-c for c in cross]
+        states.append([rng.uniform(-1, 1), rng.uniform(-1, 1), R * math.sin(theta), psi, theta,
+                       phi, v[0], v[1], v[2], dpsi, dtheta, dphi])
+    return states
+
+
+def quaternion_states(count, rng, spin):
+    """Random unit quaternions (w ≥ 0) and body angular velocities."""
+    states = []
+    for _ in range(count):
+        q = [rng.gauss(0, 1) for _ in range(4)]
+        norm = math.sqrt(sum(x * x for x in q))
+        q = [x / norm * (1 if q[0] >= 0 else -1) for x in q]
+        states.append(q + [rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-spin, spin)])
+    return states
+
+
+def write_states(states):
+    """States as text, one per line."""
+    return "".join(" ".join(repr(x) for x in s) + "\n" for s in states)
+
+
+# ---------------------------------------------------------------------------------------------
+# The comparisons
+
+class Bench:
+    def __init__(self, build, quick):
+        self.build = build
+        self.quick = quick
+        self.rng = random.Random(2026)
+        self.unidyn = os.path.join(build, "bench", "unidyn_bench")
+        self.mujoco = os.path.join(build, "bench", "peers", "peer_mujoco")
+        self.simbody = os.path.join(build, "bench", "peers", "peer_simbody")
+        self.sympy = [sys.executable, os.path.join(HERE, "sympy", "derive.py")]
+        self.lines = []
+
+    def say(self, text=""):
+        print(text, flush=True)
+        self.lines.append(text)
+
+    def have(self, program):
+        return os.path.exists(program)
+
+    # 1. Derivation against SymPy ---------------------------------------------------------------
+    def derivation(self):
+        self.say("## 1. Derivation: unidyn against SymPy 1.14 mechanics\n")
+        self.say("Time to derive the equations of motion (unidyn: parse the model and form "
+                 "Lagrange's equations; SymPy: build the system and form the equations with "
+                 "their mass matrix and forcing). q̈ compared at 3 random states.\n")
+        self.say("| model | unidyn | LagrangesMethod | ratio | KanesMethod | ratio "
+                 "| max q̈ difference |")
+        self.say("|---|---|---|---|---|---|---|")
+        links = [1, 2, 3, 4, 6] if self.quick else list(range(1, 11))
+        models = [f"pendulum-{n}" for n in links] + ["heavy-top", "rolling-disk"]
+        limit = {"lagrange": 600, "kane": 600}
+        for model in models:
+            if model.startswith("pendulum-"):
+                states = pendulum_states(int(model.split("-")[1]), 3, self.rng)
+            elif model == "heavy-top":
+                states = top_euler_states(3, self.rng)
+            else:
+                states = disk_states(3, self.rng)
+            with tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False) as f:
+                f.write(write_states(states))
+                path = f.name
+            ours = run_json([self.unidyn, "derive", model, "--repeat", "3", "--states", path])
+            cells, worst = [], 0.0
+            for method in ("lagrange", "kane"):
+                if limit[method] is None:
+                    cells += ["skipped", ""]
+                    continue
+                try:
+                    theirs = run_json(self.sympy + [model, "--method", method, "--states", path],
+                                      timeout=limit[method])
+                except (RuntimeError, subprocess.TimeoutExpired) as error:
+                    cells += [f"> {limit[method]} s" if isinstance(
+                        error, subprocess.TimeoutExpired) else "failed", ""]
+                    limit[method] = None  # larger models would take longer still
+                    continue
+                worst = max(worst, max_relative_difference(ours["qddot"], theirs["qddot"]))
+                cells += [f"{theirs['derive_seconds']:.3g} s",
+                          f"{theirs['derive_seconds'] / ours['derive_seconds']:.0f}×"]
+            os.unlink(path)
+            self.say(f"| {model} | {ours['derive_seconds'] * 1e3:.3g} ms | {cells[0]} | {cells[1]} "
+                     f"| {cells[2]} | {cells[3]} | {worst:.1e} |")
+        self.say()
+
+    # 2. Right-hand side against MuJoCo and Simbody ----------------------------------------------
+    def right_hand_side(self):
+        self.say("## 2. Right-hand side: (q, q̇) → q̈\n")
+        self.say("Time of one evaluation at a state (unidyn: compiled equations and the "
+                 "constrained solve; MuJoCo: mj_forward; Simbody: realize to Acceleration). "
+                 "Accelerations compared at 3 random states (pendulums: q̈; bodies: ω̇ in body "
+                 "components).\n")
+        self.say("| model | unidyn native | unidyn tape | MuJoCo | MuJoCo / unidyn | Simbody "
+                 "| Simbody / unidyn | max difference |")
+        self.say("|---|---|---|---|---|---|---|---|")
+        models = [f"pendulum-{n}" for n in (1, 2, 5, 10)] + ["heavy-top", "torque-free"]
+        for model in models:
+            if model.startswith("pendulum-"):
+                states = pendulum_states(int(model.split("-")[1]), 3, self.rng)
+            else:
+                states = quaternion_states(3, self.rng, 60 if model == "heavy-top" else 5)
+            text = write_states(states)
+            native, ns_native = rhs_output(run([self.unidyn, "rhs", model], text))
+            _, ns_tape = rhs_output(run([self.unidyn, "rhs", model, "--evaluation", "tape"], text))
+            cells, worst = [], 0.0
+            for peer in (self.mujoco, self.simbody):
+                if not self.have(peer):
+                    cells += ["not built", ""]
+                    continue
+                rows, ns = rhs_output(run([peer, "rhs", model], text))
+                worst = max(worst, max_relative_difference(native, rows))
+                cells += [f"{ns:.0f} ns", f"{ns / ns_native:.1f}×"]
+            self.say(f"| {model} | {ns_native:.0f} ns | {ns_tape:.0f} ns | {cells[0]} | {cells[1]} "
+                     f"| {cells[2]} | {cells[3]} | {worst:.1e} |")
+        self.say()
+
+    # 3. Time to accuracy -------------------------------------------------------------------------
+    def time_to_accuracy(self):
+        self.say("## 3. Time to accuracy: 100 s with relative energy error ≤ 1e-8\n")
+        self.say("Each tool's setting (tolerance or step) is swept; the fastest run whose largest "
+                 "relative energy error is at most 1e-8 and whose final state is within 1e-6 "
+                 "(relative to 1 + |x|) of a reference (unidyn, Dormand–Prince at rtol 1e-13) "
+                 "counts. Wall time of the integration alone.\n")
+        self.say("| model | tool | method | setting | wall time | energy error | final-state "
+                 "error | ratio to unidyn |")
+        self.say("|---|---|---|---|---|---|---|---|")
+        t_end = "20" if self.quick else "100"
+        for model in ("heavy-top", "pendulum-2"):
+            reference = run_json([self.unidyn, "simulate", model, "--t-end", t_end, "--method",
+                                  "dopri5", "--rtol", "1e-13"])["final_state"]
+            candidates = []
+            for rtol in ("1e-8", "1e-9", "1e-10", "1e-11", "1e-12"):
+                candidates.append(("unidyn", "dopri5", f"rtol {rtol}", [
+                    self.unidyn, "simulate", model, "--t-end", t_end, "--method", "dopri5",
+                    "--rtol", rtol]))
+            for step in ("1e-3", "3e-4", "1e-4"):
+                candidates.append(("unidyn", "rattle", f"h {step}", [
+                    self.unidyn, "simulate", model, "--t-end", t_end, "--method", "rattle",
+                    "--step", step]))
+            if self.have(self.mujoco):
+                for integrator in ("rk4", "euler"):
+                    for dt in ("1e-3", "3e-4", "1e-4", "3e-5", "1e-5"):
+                        candidates.append(("MuJoCo", integrator, f"dt {dt}", [
+                            self.mujoco, "simulate", model, "--t-end", t_end, "--integrator",
+                            integrator, "--dt", dt]))
+            if self.have(self.simbody):
+                for accuracy in ("1e-8", "1e-9", "1e-10", "1e-11", "1e-12"):
+                    candidates.append(("Simbody", "rkmerson", f"accuracy {accuracy}", [
+                        self.simbody, "simulate", model, "--t-end", t_end, "--integrator",
+                        "rkmerson", "--accuracy", accuracy]))
+            best = {}
+            for tool, method, setting, command in candidates:
+                try:
+                    result = run_json(command, timeout=600)
+                except (RuntimeError, subprocess.TimeoutExpired) as error:
+                    self.say(f"<!-- {tool} {method} {setting}: {str(error)[:200]} -->")
+                    continue
+                state_error = max_relative_difference([result["final_state"]], [reference])
+                ok = result["max_relative_energy_error"] <= 1e-8 and state_error <= 1e-6
+                key = (tool, method)
+                if ok and (key not in best or result["wall_seconds"] < best[key][1]["wall_seconds"]):
+                    best[key] = (setting, result, state_error)
+            ours = min((v[1]["wall_seconds"] for k, v in best.items() if k[0] == "unidyn"),
+                       default=None)
+            for (tool, method), (setting, result, state_error) in sorted(
+                    best.items(), key=lambda kv: kv[1][1]["wall_seconds"]):
+                ratio = f"{result['wall_seconds'] / ours:.1f}×" if ours else ""
+                self.say(f"| {model} | {tool} | {method} | {setting} | "
+                         f"{result['wall_seconds'] * 1e3:.3g} ms | "
+                         f"{result['max_relative_energy_error']:.1e} | {state_error:.1e} | {ratio} |")
+            for tool, method in sorted({(c[0], c[1]) for c in candidates} - set(best)):
+                self.say(f"| {model} | {tool} | {method} | none met the accuracy in the sweep | | "
+                         f"| | |")
+        self.say()
+
+    # 4. Growth with the number of links ---------------------------------------------------------
+    def growth(self):
+        self.say("## 4. Growth: the n-link pendulum\n")
+        self.say("| n | derive | compile to tape | compile native | tape instructions | native "
+                 "source | evaluation (native) | evaluation (tape) |")
+        self.say("|---|---|---|---|---|---|---|---|")
+        for n in ([1, 2, 5, 10] if self.quick else [1, 2, 4, 6, 8, 10, 12, 15, 20]):
+            model = f"pendulum-{n}"
+            derived = run_json([self.unidyn, "derive", model])
+            text = write_states(pendulum_states(n, 1, self.rng))
+            _, native = rhs_output(run([self.unidyn, "rhs", model], text))
+            _, tape = rhs_output(run([self.unidyn, "rhs", model, "--evaluation", "tape"], text))
+            self.say(f"| {n} | {derived['derive_seconds'] * 1e3:.3g} ms | "
+                     f"{derived['tape_seconds'] * 1e3:.3g} ms | {derived['native_seconds']:.2f} s | "
+                     f"{derived['instructions']} | {derived['source_bytes'] / 1024:.0f} KiB | "
+                     f"{native:.0f} ns | {tape:.0f} ns |")
+        self.say()
+
+    # 5. Long runs ---------------------------------------------------------------------------------
+    def long_runs(self):
+        steps = "1e5" if self.quick else "1e7"
+        self.say(f"## 5. Long runs: RATTLE over {steps} steps\n")
+        self.say("Largest relative energy error over the first tenth of the run and over all of "
+                 "it (sampled 1000 times): bounded for RATTLE; Dormand–Prince over the same span "
+                 "for contrast.\n")
+        self.say("| model | method | steps / step | span | wall time | error, first tenth "
+                 "| error, whole run |")
+        self.say("|---|---|---|---|---|---|---|")
+        for model, step in (("kepler", "1e-2"), ("heavy-top", "1e-3")):
+            for extra in (["--method", "rattle"], ["--method", "dopri5", "--rtol", "1e-8"]):
+                r = run_json([self.unidyn, "longrun", model, "--steps", steps, "--step", step] +
+                             extra, timeout=3600)
+                what = f"{r['steps']:.0e} × {r['step']}" if r["method"] == "rattle" else "adaptive"
+                self.say(f"| {model} | {r['method']} | {what} | {r['t_end']:.0f} s | "
+                         f"{r['wall_seconds']:.1f} s | {r['energy_error_first_tenth']:.1e} | "
+                         f"{r['energy_error_whole']:.1e} |")
+        self.say()
+
+
+def machine():
+    """A line about the machine and the commit."""
+    commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip()
+    cpu = platform.processor() or platform.machine()
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    cpu = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    return (f"Machine: {cpu}, {os.cpu_count()} cores; date {datetime.date.today()}; "
+            f"commit {commit}; Python {platform.python_version()}.")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("build")
+    parser.add_argument("--quick", action="store_true")
+    arguments = parser.parse_args()
+    bench = Bench(arguments.build, arguments.quick)
+    bench.say("# unidyn benchmarks\n")
+    bench.say(machine())
+    bench.say("Reproduce: `bash bench/run.sh` (builds into build-bench/ and runs "
+              "`python3 bench/run.py build-bench`).\n")
+    for part in (bench.derivation, bench.right_hand_side, bench.time_to_accuracy, bench.growth,
+                 bench.long_runs):
+        try:
+            part()
+        except Exception as error:  # report and go on with the other comparisons
+            bench.say(f"\n(this part failed: {error})\n")
+    if not arguments.quick:
+        with open(os.path.join(HERE, "RESULTS.md"), "w") as f:
+            f.write("\n".join(bench.lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()
