@@ -1,7 +1,7 @@
 // unidyn's side of the side-by-side benchmarks (bench/run.sh): derivation time and accelerations,
 // right-hand-side evaluation time, and time to accuracy, on the models of bench/MODELS.md.
 //
-//   unidyn_bench derive MODEL [--repeat K] [--states FILE]   (states in unidyn's coordinates)
+//   unidyn_bench derive MODEL [--method lagrange|kane] [--repeat K] [--states FILE]
 //   unidyn_bench rhs MODEL [--evaluation tape|native]         (states on stdin, peer convention)
 //   unidyn_bench simulate MODEL --t-end T --method M [--rtol R] [--step H] [--evaluation E]
 //   unidyn_bench longrun MODEL --steps N --step H [--method rattle|dopri5] [--rtol R]
@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "bench_models.hpp"
+#include "unidyn/equations/kane.hpp"
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/integrate/dormand_prince.hpp"
 #include "unidyn/integrate/rattle.hpp"
@@ -82,13 +83,14 @@ CompileOptions compile_options(const std::string& evaluation) {
 // at the given states (unidyn's coordinates).
 int derive(const std::string& name, const std::map<std::string, std::string>& o) {
   const int repeat = std::stoi(option(o, "--repeat", "1"));
+  const bool kane = option(o, "--method", "lagrange") == "kane";
   double best = INFINITY;
   bench::BenchModel model;
   EquationsOfMotion equations;
   for (int k = 0; k < repeat; ++k) {
     const auto start = Clock::now();
     model = bench::bench_model(name, UNIDYN_MODELS_DIR);
-    equations = lagrange_equations(model.system);
+    equations = kane ? kane_equations(model.system) : lagrange_equations(model.system);
     best = std::min(best, seconds_since(start));
   }
   auto start = Clock::now();
@@ -128,7 +130,7 @@ int derive(const std::string& name, const std::map<std::string, std::string>& o)
 // (solve for q̈ from q, q̇) at the first state.
 int rhs(const std::string& name, const std::map<std::string, std::string>& o) {
   const bench::BenchModel model = bench::bench_model(name, UNIDYN_MODELS_DIR);
-  const CompiledSystem compiled(model.system, lagrange_equations(model.system),
+  const CompiledSystem compiled(model.system, kane_equations(model.system),
                                 compile_options(option(o, "--evaluation", "native")));
   const SimulationStart initial = initial_state(model.system, {});
   CompiledSystemData data = compiled.make_data();
@@ -163,7 +165,7 @@ int rhs(const std::string& name, const std::map<std::string, std::string>& o) {
 // every output_step, the largest relative energy error and the final state (peer convention).
 int simulate_run(const std::string& name, const std::map<std::string, std::string>& o) {
   const bench::BenchModel model = bench::bench_model(name, UNIDYN_MODELS_DIR);
-  const CompiledSystem compiled(model.system, lagrange_equations(model.system),
+  const CompiledSystem compiled(model.system, kane_equations(model.system),
                                 compile_options(option(o, "--evaluation", "native")));
   SimulationOptions options = simulation_options(model.system.simulate);
   options.t_end = std::stod(option(o, "--t-end", "100"));
@@ -208,7 +210,7 @@ int simulate_run(const std::string& name, const std::map<std::string, std::strin
 // the same span by Dormand–Prince at --rtol for contrast.
 int long_run(const std::string& name, const std::map<std::string, std::string>& o) {
   const bench::BenchModel model = bench::bench_model(name, UNIDYN_MODELS_DIR);
-  const EquationsOfMotion equations = lagrange_equations(model.system);
+  const EquationsOfMotion equations = kane_equations(model.system);
   const CompiledSystem compiled(model.system, equations);
   const auto steps = static_cast<long>(std::stod(option(o, "--steps", "1e7")));
   const double h = std::stod(option(o, "--step", "1e-3"));

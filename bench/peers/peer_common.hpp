@@ -97,7 +97,7 @@ inline Model parseModel(const std::string& name) {
 
 // Initial state of the time-to-accuracy runs (pendulum-2 and heavy-top only).
 inline std::vector<double> timeToAccuracyState(const Model& model) {
-  if (model.kind == ModelKind::kPendulum && model.links == 2) return {1.0, 1.0, 0.0, 0.0};
+  if (model.kind == ModelKind::kPendulum && model.links == 2) return {0.5, 0.0, 0.0, 0.0};
   if (model.kind == ModelKind::kHeavyTop) {
     return {std::cos(0.15), std::sin(0.15), 0.0, 0.0, 0.0, 0.0, 60.0};
   }
@@ -129,8 +129,8 @@ inline std::vector<std::vector<double>> readStates(std::istream& in, const Model
     if (state.empty()) continue;
     if (state.size() != model.stateSize()) {
       throw UsageError("line " + std::to_string(lineNumber) + ": expected " +
-                       std::to_string(model.stateSize()) + " numbers for " + model.name +
-                       ", got " + std::to_string(state.size()));
+                       std::to_string(model.stateSize()) + " numbers for " + model.name + ", got " +
+                       std::to_string(state.size()));
     }
     normalizeAttitude(model, state);
     states.push_back(std::move(state));
@@ -246,12 +246,11 @@ inline void printUsage(const char* program, const char* integrators) {
 }
 
 inline void printSimulateJson(const SimulateResult& result) {
-  std::string json = "{\"wall_seconds\":" + formatNumber(result.wallSeconds) +
-                     ",\"steps\":" + std::to_string(result.steps) +
-                     ",\"max_relative_energy_error\":" +
-                     formatNumber(result.maxRelativeEnergyError) +
-                     ",\"initial_energy\":" + formatNumber(result.initialEnergy) +
-                     ",\"final_state\":[";
+  std::string json =
+      "{\"wall_seconds\":" + formatNumber(result.wallSeconds) +
+      ",\"steps\":" + std::to_string(result.steps) +
+      ",\"max_relative_energy_error\":" + formatNumber(result.maxRelativeEnergyError) +
+      ",\"initial_energy\":" + formatNumber(result.initialEnergy) + ",\"final_state\":[";
   for (std::size_t i = 0; i < result.finalState.size(); ++i) {
     if (i > 0) json += ',';
     json += formatNumber(result.finalState[i]);

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "unidyn/equations/equivalence.hpp"
+#include "unidyn/equations/kane.hpp"
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/equations/newton.hpp"
 #include "unidyn/equations/reduction.hpp"
@@ -126,8 +127,11 @@ void write_integrability(const System& system, EquationFormat format) {
 int run_derive(const ModelCommands& c) {
   const System system = command_model(c);
   const EquationFormat format = parse_format(c.format);
-  if (c.method == "lagrange") {
-    write_lagrange(std::cout, system, lagrange_equations(system), format);
+  if (c.method == "lagrange" || c.method == "kane") {
+    // M q̈ = f + Aᵀλ by Lagrange's equations, or through partial velocities (the same M and f)
+    write_lagrange(std::cout, system,
+                   c.method == "kane" ? kane_equations(system) : lagrange_equations(system),
+                   format);
     if (format != EquationFormat::json) write_integrability(system, format);
   } else if (c.method == "newton-euler") {
     write_newton(std::cout, system, newton_equations(system), format);
@@ -136,7 +140,7 @@ int run_derive(const ModelCommands& c) {
     write_second_form(std::cout, system, eq,
                       lagrange_second_form(system, newton_equations(system), eq), format);
   } else {
-    throw std::invalid_argument("--method must be lagrange, second-form or newton-euler");
+    throw std::invalid_argument("--method must be lagrange, kane, second-form or newton-euler");
   }
   return 0;
 }
@@ -210,7 +214,9 @@ int run_simulate(const ModelCommands& c) {
   // the cache of native code is keyed by the model's text (and how it was reduced)
   compile_options.native_options.key =
       std::string(c.reduced ? "reduced\n" : "full\n") + read_model_text(c);
-  const CompiledSystem compiled(system, lagrange_equations(system), compile_options);
+  // the numerics take M and f through partial velocities: the same equations as Lagrange's
+  // (tested on every bundled model), derived faster and with fewer operations
+  const CompiledSystem compiled(system, kane_equations(system), compile_options);
   const double derive_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
 
@@ -315,7 +321,7 @@ const CLI::Validator kPositive(
 void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.derive = app.add_subcommand("derive", "Print a model's equations of motion");
   c.derive->add_option("model", c.model, "MODEL file or bundled model name")->required();
-  c.derive->add_option("--method", c.method, "lagrange | second-form | newton-euler")
+  c.derive->add_option("--method", c.method, "lagrange | kane | second-form | newton-euler")
       ->capture_default_str();
   c.derive->add_option("--format", c.format, "text | latex | json")->capture_default_str();
   c.derive->add_flag("--reduced", c.reduced,

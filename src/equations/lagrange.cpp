@@ -3,17 +3,11 @@
 
 namespace unidyn {
 
-EquationsOfMotion lagrange_equations(const System& system) {
-  const Configuration& config = system.configuration;
+std::vector<Expr> generalized_forces(const System& system) {
   const auto& q = system.coordinates();
   const std::size_t n = q.size();
-  const std::size_t m = system.constraints.size();
-  EquationsOfMotion eq;
-  eq.kinetic_energy = system.kinetic_energy();
-  eq.potential_energy = system.potential_energy();
-
+  std::vector<Expr> phi(n, 0);
   // Φ_i = Σ F · ∂r/∂q^i + Σ M · ∂ω/∂q̇^i over the non-conservative elements (10.x)
-  eq.generalized_force.assign(n, 0);
   std::vector<VectorExpr> omega;
   for (std::size_t b = 0; b < system.bodies.size(); ++b)
     omega.push_back(system.angular_velocity(b));
@@ -21,34 +15,25 @@ EquationsOfMotion lagrange_equations(const System& system) {
     if (element.conservative) continue;
     for (std::size_t i = 0; i < n; ++i) {
       for (const auto& [p, F] : element.forces) {
-        eq.generalized_force[i] += dot(F, diff(system.particles[p].position, q[i].value));
+        phi[i] += dot(F, diff(system.particles[p].position, q[i].value));
       }
       for (const auto& f : element.body_forces) {
-        eq.generalized_force[i] += dot(f.force, diff(f.point, q[i].value));
+        phi[i] += dot(f.force, diff(f.point, q[i].value));
       }
       for (const auto& moment : element.moments) {
-        eq.generalized_force[i] += dot(moment.moment, diff(omega[moment.body], q[i].rate));
+        phi[i] += dot(moment.moment, diff(omega[moment.body], q[i].rate));
       }
     }
   }
+  return phi;
+}
 
-  // Row i: d/dt(∂T/∂q̇^i) − ∂T/∂q^i + ∂U/∂q^i − Φ_i, linear in q̈: M_ij = ∂(row)/∂q̈^j
-  const GiNaC::exmap no_acceleration = config.zero_accelerations();
-  eq.mass_matrix = ExprMatrix(n, n);
-  eq.forcing.assign(n, 0);
-  eq.inertia_terms.assign(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Expr momentum = eq.kinetic_energy.diff(q[i].rate);
-    eq.inertia_terms[i] = config.total_derivative(momentum) - eq.kinetic_energy.diff(q[i].value);
-    for (std::size_t j = 0; j < n; ++j) {
-      eq.mass_matrix(i, j) = momentum.diff(q[j].rate);
-    }
-    const Expr row =
-        eq.inertia_terms[i] + eq.potential_energy.diff(q[i].value) - eq.generalized_force[i];
-    eq.forcing[i] = -row.subs(no_acceleration);
-  }
-
+void constraint_rows(const System& system, EquationsOfMotion& eq) {
   // Constraints: a_k · q̇ + e_k = 0 and its rate A q̈ + b = 0
+  const Configuration& config = system.configuration;
+  const auto& q = system.coordinates();
+  const std::size_t n = q.size();
+  const std::size_t m = system.constraints.size();
   eq.constraint_matrix = ExprMatrix(m, n);
   eq.constraint_velocity_term.assign(m, 0);
   eq.constraint_bias.assign(m, 0);
@@ -66,8 +51,40 @@ EquationsOfMotion lagrange_equations(const System& system) {
     }
     for (std::size_t j = 0; j < n; ++j) eq.constraint_matrix(k, j) = velocity_form.diff(q[j].rate);
     eq.constraint_velocity_term[k] = velocity_form.subs(no_rate);
-    eq.constraint_bias[k] = config.total_derivative(velocity_form).subs(no_acceleration);
+    eq.constraint_bias[k] = config.convective_derivative(velocity_form);  // at q̈ = 0
   }
+}
+
+EquationsOfMotion lagrange_equations(const System& system) {
+  const Configuration& config = system.configuration;
+  const auto& q = system.coordinates();
+  const std::size_t n = q.size();
+  EquationsOfMotion eq;
+  eq.kinetic_energy = system.kinetic_energy();
+  eq.potential_energy = system.potential_energy();
+
+  eq.generalized_force = generalized_forces(system);
+
+  // Row i: d/dt(∂T/∂q̇^i) − ∂T/∂q^i + ∂U/∂q^i − Φ_i, linear in q̈. With p_i = ∂T/∂q̇^i:
+  // M_ij = ∂p_i/∂q̇^j (symmetric: each pair once), d/dt p_i = Σ_j M_ij q̈^j + c_i with the
+  // convective part c_i = ∂p_i/∂t + Σ_j ∂p_i/∂q^j q̇^j, and f_i = −(c_i − ∂T/∂q^i + ∂U/∂q^i − Φ_i).
+  eq.mass_matrix = ExprMatrix(n, n);
+  eq.forcing.assign(n, 0);
+  eq.inertia_terms.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Expr momentum = eq.kinetic_energy.diff(q[i].rate);
+    for (std::size_t j = i; j < n; ++j) {
+      eq.mass_matrix(i, j) = momentum.diff(q[j].rate);
+      eq.mass_matrix(j, i) = eq.mass_matrix(i, j);
+    }
+    const Expr convective =
+        config.convective_derivative(momentum) - eq.kinetic_energy.diff(q[i].value);
+    Expr inertia = convective;
+    for (std::size_t j = 0; j < n; ++j) inertia += eq.mass_matrix(i, j) * q[j].acceleration;
+    eq.inertia_terms[i] = inertia;
+    eq.forcing[i] = -(convective + eq.potential_energy.diff(q[i].value) - eq.generalized_force[i]);
+  }
+  constraint_rows(system, eq);
   return eq;
 }
 

@@ -57,6 +57,12 @@ Expr Configuration::total_derivative(const Expr& f) const {
   return result;
 }
 
+Expr Configuration::convective_derivative(const Expr& f) const {
+  Expr result = f.diff(time_);
+  for (const auto& q : coordinates_) result += f.diff(q.value) * q.rate;
+  return result;
+}
+
 VectorExpr Configuration::total_derivative(const VectorExpr& v) const {
   return {total_derivative(v[0]), total_derivative(v[1]), total_derivative(v[2])};
 }

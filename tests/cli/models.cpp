@@ -366,7 +366,7 @@ TEST(CliModels, DeriveBodiesJson) {
   ASSERT_EQ(text.status, 0) << text.err;
   EXPECT_EQ(lines_starting(text.out, "  [alpha]  d(gimbal.omega)/d(alpha') = ").size(), 1u)
       << text.out;
-  const Outcome bad = run("derive heavy-top --method kane");
+  const Outcome bad = run("derive heavy-top --method hamilton");
   EXPECT_EQ(bad.status, 2);
   EXPECT_TRUE(contains(bad.err, "second-form")) << bad.err;
 }

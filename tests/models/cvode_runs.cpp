@@ -65,8 +65,9 @@ TEST(CvodeRuns, ConstrainedTopConvergesToDormandPrince) {
     const test::ModelRun run = run_cvode("heavy-top-socket", rtol);
     ASSERT_TRUE(run.summary.ok) << run.summary.message;
     ASSERT_EQ(run.rows.size(), reference.rows.size());
+    // |Ψ| is dimensionless; |A q̇| scales with the rates, |ė| up to ~25 /s here
     EXPECT_LT(run.summary.max_position_residual, 10 * rtol);
-    EXPECT_LT(run.summary.max_velocity_residual, 10 * rtol);
+    EXPECT_LT(run.summary.max_velocity_residual, 10 * rtol * 25);
     drifts.push_back(run.summary.energy_relative_drift);
     const std::size_t last = run.rows.size() - 1;
     double error = 0;

@@ -36,4 +36,9 @@ struct EquationsOfMotion {
 // Derives the equations of motion of a system by Lagrange's equations, approach I.
 EquationsOfMotion lagrange_equations(const System& system);
 
+// The pieces every form of the equations shares: Φ_i of the non-conservative loads, and the
+// constraint rows a_k, e_k, b_k, Ψ_k (into eq).
+std::vector<Expr> generalized_forces(const System& system);
+void constraint_rows(const System& system, EquationsOfMotion& eq);
+
 }  // namespace unidyn

@@ -38,6 +38,10 @@ class Configuration {
   Expr total_derivative(const Expr& f) const;
   VectorExpr total_derivative(const VectorExpr& v) const;
 
+  // The part of ḟ without q̈, for f free of q̇'s rates' rates: ∂f/∂t + Σ ∂f/∂q^i q̇^i (what
+  // total_derivative(f) becomes at q̈ = 0, without forming the q̈ terms).
+  Expr convective_derivative(const Expr& f) const;
+
   // The substitution q̈ ↦ 0 for every coordinate: what is left of an expression linear in q̈.
   GiNaC::exmap zero_accelerations() const;
 

@@ -1,0 +1,97 @@
+// The equations of motion through partial velocities (Kane; Lagrange's second form (10.16)).
+#include "unidyn/equations/kane.hpp"
+
+namespace unidyn {
+namespace {
+
+// The rows of M and the convective parts c_i = Σ m ∂v/∂q̇^i · a⁰ (+ the bodies' rotation), summed
+// into mass and convective.
+struct Accumulator {
+  const System& system;
+  ExprMatrix& mass;
+  std::vector<Expr>& convective;
+
+  // A point mass m moving with position r(q, t): ∂v/∂q̇^i = ∂r/∂q^i, a⁰ = d/dt(v) at q̈ = 0.
+  void point(const Expr& m, const VectorExpr& r) {
+    const Configuration& config = system.configuration;
+    const auto& q = system.coordinates();
+    const std::size_t n = q.size();
+    std::vector<VectorExpr> partial(n);
+    VectorExpr v = diff(r, system.time());
+    for (std::size_t i = 0; i < n; ++i) {
+      partial[i] = diff(r, q[i].value);
+      v = v + partial[i] * q[i].rate;
+    }
+    const VectorExpr a0{config.convective_derivative(v[0]), config.convective_derivative(v[1]),
+                        config.convective_derivative(v[2])};
+    for (std::size_t i = 0; i < n; ++i) {
+      if (is_zero(partial[i])) continue;
+      for (std::size_t j = i; j < n; ++j) mass(i, j) += m * dot(partial[i], partial[j]);
+      convective[i] += m * dot(partial[i], a0);
+    }
+  }
+
+  // Body b's rotation: ∂ω/∂q̇^i, J = Q J0 Qᵀ, and Ḣ⁰ = J ω̇⁰ + ω × J ω.
+  void rotation(std::size_t b) {
+    const Configuration& config = system.configuration;
+    const auto& q = system.coordinates();
+    const std::size_t n = q.size();
+    const Body& body = system.bodies[b];
+    const GiNaC::matrix J = body.rotation.mul(body.inertia).mul(body.rotation.transpose());
+    const VectorExpr omega = system.angular_velocity(b);
+    const VectorExpr omega_dot0{config.convective_derivative(omega[0]),
+                                config.convective_derivative(omega[1]),
+                                config.convective_derivative(omega[2])};
+    const VectorExpr H_dot0 = times(J, omega_dot0) + cross(omega, times(J, omega));
+    std::vector<VectorExpr> partial(n), J_partial(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      partial[i] = diff(omega, q[i].rate);
+      J_partial[i] = times(J, partial[i]);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (is_zero(partial[i])) continue;
+      for (std::size_t j = i; j < n; ++j) mass(i, j) += dot(partial[i], J_partial[j]);
+      convective[i] += dot(partial[i], H_dot0);
+    }
+  }
+
+  static bool is_zero(const VectorExpr& v) {
+    return v[0].is_zero() && v[1].is_zero() && v[2].is_zero();
+  }
+};
+
+}  // namespace
+
+EquationsOfMotion kane_equations(const System& system) {
+  const auto& q = system.coordinates();
+  const std::size_t n = q.size();
+  EquationsOfMotion eq;
+  eq.kinetic_energy = system.kinetic_energy();
+  eq.potential_energy = system.potential_energy();
+  eq.generalized_force = generalized_forces(system);
+  // M and c from every particle and body
+  eq.mass_matrix = ExprMatrix(n, n);
+  std::vector<Expr> convective(n, 0);
+  Accumulator sum{system, eq.mass_matrix, convective};
+  for (const Particle& p : system.particles) sum.point(p.mass, p.position);
+  for (std::size_t b = 0; b < system.bodies.size(); ++b) {
+    sum.point(system.bodies[b].mass, system.bodies[b].center);
+    sum.rotation(b);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < i; ++j) eq.mass_matrix(i, j) = eq.mass_matrix(j, i);
+  }
+  // Σ m a · ∂v/∂q̇^i = Σ_j M_ij q̈^j + c_i: the left sides; f_i = Φ_i − ∂U/∂q^i − c_i
+  eq.forcing.assign(n, 0);
+  eq.inertia_terms.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    Expr inertia = convective[i];
+    for (std::size_t j = 0; j < n; ++j) inertia += eq.mass_matrix(i, j) * q[j].acceleration;
+    eq.inertia_terms[i] = inertia;
+    eq.forcing[i] = eq.generalized_force[i] - eq.potential_energy.diff(q[i].value) - convective[i];
+  }
+  constraint_rows(system, eq);
+  return eq;
+}
+
+}  // namespace unidyn
