@@ -150,15 +150,17 @@ class Bench:
     # 1. Derivation against SymPy ---------------------------------------------------------------
     def derivation(self):
         self.say("## 1. Derivation: unidyn against SymPy 1.14 mechanics\n")
-        self.say("Time to derive the equations of motion (unidyn: parse the model and form "
-                 "Lagrange's equations; SymPy: build the system and form the equations with "
-                 "their mass matrix and forcing). q̈ compared at 3 random states.\n")
-        self.say("| model | unidyn | LagrangesMethod | ratio | KanesMethod | ratio "
-                 "| max q̈ difference |")
-        self.say("|---|---|---|---|---|---|---|")
+        self.say("Time to derive the equations of motion, best of 3 for unidyn, one run for SymPy "
+                 "(unidyn: read the model and form M q̈ = f, by Lagrange's equations and by Kane's "
+                 "form through partial velocities; SymPy: build the system and form the equations "
+                 "with their mass matrix and forcing, by LagrangesMethod and KanesMethod). q̈ of "
+                 "all four compared at 3 random states.\n")
+        self.say("| model | unidyn Lagrange | SymPy Lagrange | ratio | unidyn Kane | SymPy Kane "
+                 "| ratio | max q̈ difference |")
+        self.say("|---|---|---|---|---|---|---|---|")
         links = [1, 2, 3, 4, 6] if self.quick else list(range(1, 11))
         models = [f"pendulum-{n}" for n in links] + ["heavy-top", "rolling-disk"]
-        limit = {"lagrange": 600, "kane": 600}
+        limit = {"lagrange": 900, "kane": 900}
         for model in models:
             if model.startswith("pendulum-"):
                 states = pendulum_states(int(model.split("-")[1]), 3, self.rng)
@@ -169,27 +171,46 @@ class Bench:
             with tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False) as f:
                 f.write(write_states(states))
                 path = f.name
-            ours = run_json([self.unidyn, "derive", model, "--repeat", "3", "--states", path])
-            cells, worst = [], 0.0
+            cells, worst, reference = [], 0.0, None
             for method in ("lagrange", "kane"):
+                ours = run_json([self.unidyn, "derive", model, "--method", method, "--repeat",
+                                 "3", "--states", path])
+                reference = reference or ours["qddot"]
+                worst = max(worst, max_relative_difference(ours["qddot"], reference))
+                cells.append(f"{ours['derive_seconds'] * 1e3:.3g} ms")
                 if limit[method] is None:
-                    cells += ["skipped", ""]
+                    cells += ["not run", ""]
                     continue
                 try:
                     theirs = run_json(self.sympy + [model, "--method", method, "--states", path],
                                       timeout=limit[method])
-                except (RuntimeError, subprocess.TimeoutExpired) as error:
-                    cells += [f"> {limit[method]} s" if isinstance(
-                        error, subprocess.TimeoutExpired) else "failed", ""]
+                except subprocess.TimeoutExpired:
+                    cells += [f"> {limit[method]} s", ""]
                     limit[method] = None  # larger models would take longer still
                     continue
-                worst = max(worst, max_relative_difference(ours["qddot"], theirs["qddot"]))
+                except RuntimeError:
+                    cells += ["failed", ""]
+                    continue
+                worst = max(worst, max_relative_difference(theirs["qddot"], reference))
                 cells += [f"{theirs['derive_seconds']:.3g} s",
                           f"{theirs['derive_seconds'] / ours['derive_seconds']:.0f}×"]
             os.unlink(path)
-            self.say(f"| {model} | {ours['derive_seconds'] * 1e3:.3g} ms | {cells[0]} | {cells[1]} "
-                     f"| {cells[2]} | {cells[3]} | {worst:.1e} |")
+            self.say(f"| {model} | " + " | ".join(cells) + f" | {worst:.1e} |")
         self.say()
+
+    # 6. Micro benchmarks -------------------------------------------------------------------------
+    def micro(self):
+        self.say("## 6. Micro benchmarks (Google Benchmark)\n")
+        self.say("```")
+        for name in ("bench_tape", "bench_rotation", "bench_integrate"):
+            program = os.path.join(self.build, "bench", name)
+            if not self.have(program):
+                continue
+            text = run([program, "--benchmark_min_time=0.05"])
+            for line in text.splitlines():
+                if line.startswith("BM_"):
+                    self.say(line)
+        self.say("```\n")
 
     # 2. Right-hand side against MuJoCo and Simbody ----------------------------------------------
     def right_hand_side(self):
@@ -285,19 +306,23 @@ class Bench:
     # 4. Growth with the number of links ---------------------------------------------------------
     def growth(self):
         self.say("## 4. Growth: the n-link pendulum\n")
-        self.say("| n | derive | compile to tape | compile native | tape instructions | native "
-                 "source | evaluation (native) | evaluation (tape) |")
-        self.say("|---|---|---|---|---|---|---|---|")
+        self.say("Derivation by Lagrange's equations and by Kane's form; the compiled equations "
+                 "(Kane's, as simulate uses them): tape size, native source size and compile time, "
+                 "and one right-hand side.\n")
+        self.say("| n | derive (Lagrange) | derive (Kane) | compile to tape | compile native | tape "
+                 "instructions | native source | evaluation (native) | evaluation (tape) |")
+        self.say("|---|---|---|---|---|---|---|---|---|")
         for n in ([1, 2, 5, 10] if self.quick else [1, 2, 4, 6, 8, 10, 12, 15, 20]):
             model = f"pendulum-{n}"
-            derived = run_json([self.unidyn, "derive", model])
+            lagrange = run_json([self.unidyn, "derive", model])
+            kane = run_json([self.unidyn, "derive", model, "--method", "kane"])
             text = write_states(pendulum_states(n, 1, self.rng))
             _, native = rhs_output(run([self.unidyn, "rhs", model], text))
             _, tape = rhs_output(run([self.unidyn, "rhs", model, "--evaluation", "tape"], text))
-            self.say(f"| {n} | {derived['derive_seconds'] * 1e3:.3g} ms | "
-                     f"{derived['tape_seconds'] * 1e3:.3g} ms | {derived['native_seconds']:.2f} s | "
-                     f"{derived['instructions']} | {derived['source_bytes'] / 1024:.0f} KiB | "
-                     f"{native:.0f} ns | {tape:.0f} ns |")
+            self.say(f"| {n} | {lagrange['derive_seconds'] * 1e3:.3g} ms | "
+                     f"{kane['derive_seconds'] * 1e3:.3g} ms | {kane['tape_seconds'] * 1e3:.3g} ms | "
+                     f"{kane['native_seconds']:.2f} s | {kane['instructions']} | "
+                     f"{kane['source_bytes'] / 1024:.0f} KiB | {native:.0f} ns | {tape:.0f} ns |")
         self.say()
 
     # 5. Long runs ---------------------------------------------------------------------------------
@@ -349,7 +374,7 @@ def main():
     bench.say("Reproduce: `bash bench/run.sh` (builds into build-bench/ and runs "
               "`python3 bench/run.py build-bench`).\n")
     for part in (bench.derivation, bench.right_hand_side, bench.time_to_accuracy, bench.growth,
-                 bench.long_runs):
+                 bench.long_runs, bench.micro):
         try:
             part()
         except Exception as error:  # report and go on with the other comparisons
