@@ -63,14 +63,9 @@ struct Accumulator {
 }  // namespace
 
 EquationsOfMotion kane_equations(const System& system) {
-  const auto& q = system.coordinates();
-  const std::size_t n = q.size();
-  EquationsOfMotion eq;
-  eq.kinetic_energy = system.kinetic_energy();
-  eq.potential_energy = system.potential_energy();
-  eq.generalized_force = generalized_forces(system);
-  // M and c from every particle and body
-  eq.mass_matrix = ExprMatrix(n, n);
+  const std::size_t n = system.coordinates().size();
+  EquationsOfMotion eq = energies_and_forces(system);
+  // M and c from every particle and body: Σ m a · ∂v/∂q̇^i = Σ_j M_ij q̈^j + c_i
   std::vector<Expr> convective(n, 0);
   Accumulator sum{system, eq.mass_matrix, convective};
   for (const Particle& p : system.particles) sum.point(p.mass, p.position);
@@ -81,16 +76,7 @@ EquationsOfMotion kane_equations(const System& system) {
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < i; ++j) eq.mass_matrix(i, j) = eq.mass_matrix(j, i);
   }
-  // Σ m a · ∂v/∂q̇^i = Σ_j M_ij q̈^j + c_i: the left sides; f_i = Φ_i − ∂U/∂q^i − c_i
-  eq.forcing.assign(n, 0);
-  eq.inertia_terms.assign(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    Expr inertia = convective[i];
-    for (std::size_t j = 0; j < n; ++j) inertia += eq.mass_matrix(i, j) * q[j].acceleration;
-    eq.inertia_terms[i] = inertia;
-    eq.forcing[i] = eq.generalized_force[i] - eq.potential_energy.diff(q[i].value) - convective[i];
-  }
-  constraint_rows(system, eq);
+  finish_equations(system, convective, eq);
   return eq;
 }
 

@@ -55,36 +55,50 @@ void constraint_rows(const System& system, EquationsOfMotion& eq) {
   }
 }
 
+EquationsOfMotion energies_and_forces(const System& system) {
+  const std::size_t n = system.coordinates().size();
+  EquationsOfMotion eq;
+  eq.kinetic_energy = system.kinetic_energy();
+  eq.potential_energy = system.potential_energy();
+  eq.generalized_force = generalized_forces(system);
+  eq.mass_matrix = ExprMatrix(n, n);
+  return eq;
+}
+
+void finish_equations(const System& system, const std::vector<Expr>& convective,
+                      EquationsOfMotion& eq) {
+  const auto& q = system.coordinates();
+  const std::size_t n = q.size();
+  // row i: Σ_j M_ij q̈^j + c_i + ∂U/∂q^i − Φ_i = 0, so f_i = Φ_i − ∂U/∂q^i − c_i
+  eq.forcing.assign(n, 0);
+  eq.inertia_terms.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    Expr inertia = convective[i];
+    for (std::size_t j = 0; j < n; ++j) inertia += eq.mass_matrix(i, j) * q[j].acceleration;
+    eq.inertia_terms[i] = inertia;
+    eq.forcing[i] = eq.generalized_force[i] - eq.potential_energy.diff(q[i].value) - convective[i];
+  }
+  constraint_rows(system, eq);
+}
+
 EquationsOfMotion lagrange_equations(const System& system) {
   const Configuration& config = system.configuration;
   const auto& q = system.coordinates();
   const std::size_t n = q.size();
-  EquationsOfMotion eq;
-  eq.kinetic_energy = system.kinetic_energy();
-  eq.potential_energy = system.potential_energy();
-
-  eq.generalized_force = generalized_forces(system);
-
+  EquationsOfMotion eq = energies_and_forces(system);
   // Row i: d/dt(∂T/∂q̇^i) − ∂T/∂q^i + ∂U/∂q^i − Φ_i, linear in q̈. With p_i = ∂T/∂q̇^i:
-  // M_ij = ∂p_i/∂q̇^j (symmetric: each pair once), d/dt p_i = Σ_j M_ij q̈^j + c_i with the
-  // convective part c_i = ∂p_i/∂t + Σ_j ∂p_i/∂q^j q̇^j, and f_i = −(c_i − ∂T/∂q^i + ∂U/∂q^i − Φ_i).
-  eq.mass_matrix = ExprMatrix(n, n);
-  eq.forcing.assign(n, 0);
-  eq.inertia_terms.assign(n, 0);
+  // M_ij = ∂p_i/∂q̇^j (symmetric: each pair once), d/dt p_i = Σ_j M_ij q̈^j + ṗ_i⁰ with the
+  // convective part ṗ_i⁰ = ∂p_i/∂t + Σ_j ∂p_i/∂q^j q̇^j, and c_i = ṗ_i⁰ − ∂T/∂q^i.
+  std::vector<Expr> convective(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     const Expr momentum = eq.kinetic_energy.diff(q[i].rate);
     for (std::size_t j = i; j < n; ++j) {
       eq.mass_matrix(i, j) = momentum.diff(q[j].rate);
       eq.mass_matrix(j, i) = eq.mass_matrix(i, j);
     }
-    const Expr convective =
-        config.convective_derivative(momentum) - eq.kinetic_energy.diff(q[i].value);
-    Expr inertia = convective;
-    for (std::size_t j = 0; j < n; ++j) inertia += eq.mass_matrix(i, j) * q[j].acceleration;
-    eq.inertia_terms[i] = inertia;
-    eq.forcing[i] = -(convective + eq.potential_energy.diff(q[i].value) - eq.generalized_force[i]);
+    convective[i] = config.convective_derivative(momentum) - eq.kinetic_energy.diff(q[i].value);
   }
-  constraint_rows(system, eq);
+  finish_equations(system, convective, eq);
   return eq;
 }
 

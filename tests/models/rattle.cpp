@@ -10,34 +10,46 @@
 namespace unidyn {
 namespace {
 
+// A model's natural system and a RATTLE stepper of step h started at the model's initial state.
+struct RattleRun {
+  System system;
+  CompiledNaturalSystem natural;
+  SimulationStart start;
+  Rattle stepper;
+
+  RattleRun(const std::string& name, double h)
+      : system(load_model(test::model_path(name))),
+        natural(system, lagrange_equations(system)),
+        start(initial_state(system, {})),
+        stepper(natural, start.parameters, RattleOptions{.step = h}) {
+    stepper.initialize(0, y0());
+  }
+  Eigen::VectorXd y0() const {
+    Eigen::VectorXd y(2 * start.q.size());
+    y << start.q, start.qdot;
+    return y;
+  }
+};
+
 // The state at t_end from the model's initial state, by RATTLE with step h.
-Eigen::VectorXd rattle_state(const System& system, const CompiledNaturalSystem& natural, double h,
-                             double t_end) {
-  const SimulationStart start = initial_state(system, {});
-  RattleOptions options;
-  options.step = h;
-  Rattle stepper(natural, start.parameters, options);
-  Eigen::VectorXd y0(2 * start.q.size());
-  y0 << start.q, start.qdot;
-  stepper.initialize(0, y0);
-  while (stepper.t() < t_end) stepper.step(t_end);
-  return stepper.y();
+Eigen::VectorXd rattle_state(const std::string& name, double h, double t_end) {
+  RattleRun run(name, h);
+  while (run.stepper.t() < t_end) run.stepper.step(t_end);
+  return run.stepper.y();
 }
 
 // The error falls fourfold when h is halved: second order, on an unconstrained model with M(q)
 // (the double pendulum) and a constrained one (the Cartesian spherical pendulum).
 TEST(Rattle, SecondOrder) {
   for (const std::string name : {"double-pendulum", "spherical-pendulum-cartesian"}) {
-    const System system = load_model(test::model_path(name));
-    const CompiledNaturalSystem natural(system, lagrange_equations(system));
     const test::ModelRun reference =
         test::run_model(name, {}, [](SimulationOptions& o) { o.t_end = 1.0; });
     ASSERT_TRUE(reference.summary.ok);
     const std::vector<double>& last = reference.rows.back();
-    const auto n = static_cast<Eigen::Index>(system.coordinates().size());
+    const auto n = static_cast<Eigen::Index>(reference.system.coordinates().size());
     std::vector<double> errors;
     for (const double h : {0.01, 0.005, 0.0025}) {
-      const Eigen::VectorXd y = rattle_state(system, natural, h, 1.0);
+      const Eigen::VectorXd y = rattle_state(name, h, 1.0);
       double error = 0;
       for (Eigen::Index i = 0; i < 2 * n; ++i) {
         error = std::max(error, std::abs(y[i] - last[static_cast<std::size_t>(1 + i)]));
@@ -52,20 +64,12 @@ TEST(Rattle, SecondOrder) {
 
 // Symmetric: a step of h then one of −h returns to the start (to the iterations' round-off).
 TEST(Rattle, SymmetricStep) {
-  const System system = load_model(test::model_path("spherical-pendulum-cartesian"));
-  const CompiledNaturalSystem natural(system, lagrange_equations(system));
-  const SimulationStart start = initial_state(system, {});
-  RattleOptions options;
-  options.step = 0.05;
-  Rattle stepper(natural, start.parameters, options);
-  Eigen::VectorXd y0(6);
-  y0 << start.q, start.qdot;
-  stepper.initialize(0, y0);
-  stepper.step(1.0);
-  EXPECT_EQ(stepper.t(), 0.05);
-  EXPECT_GT((stepper.y() - y0).norm(), 0.01);
-  stepper.step(-1.0);
-  EXPECT_LT((stepper.y() - y0).cwiseAbs().maxCoeff(), 1e-13);
+  RattleRun run("spherical-pendulum-cartesian", 0.05);
+  run.stepper.step(1.0);
+  EXPECT_EQ(run.stepper.t(), 0.05);
+  EXPECT_GT((run.stepper.y() - run.y0()).norm(), 0.01);
+  run.stepper.step(-1.0);
+  EXPECT_LT((run.stepper.y() - run.y0()).cwiseAbs().maxCoeff(), 1e-13);
 }
 
 // Over 2·10⁴ steps the energy error stays bounded: its largest value over the whole run is no more
@@ -94,21 +98,16 @@ TEST(Rattle, ConstraintsAndBoundedEnergy) {
 
 // Ψ = 0 and G q̇ = 0 hold to round-off after every one of 2·10⁴ steps.
 TEST(Rattle, ConstraintsHeldAtEveryStep) {
-  const System system = load_model(test::model_path("spherical-pendulum-cartesian"));
-  const CompiledNaturalSystem natural(system, lagrange_equations(system));
-  const SimulationStart start = initial_state(system, {});
-  RattleOptions options;
-  options.step = 0.005;
-  Rattle stepper(natural, start.parameters, options);
-  Eigen::VectorXd y0(6), psi;
+  RattleRun run("spherical-pendulum-cartesian", 0.005);
+  Rattle& stepper = run.stepper;
+  const std::vector<double>& parameters = run.start.parameters;
+  Eigen::VectorXd psi;
   Eigen::MatrixXd G;
-  y0 << start.q, start.qdot;
-  stepper.initialize(0, y0);
-  NaturalSystemData data = natural.make_data();
+  NaturalSystemData data = run.natural.make_data();
   double position = 0, velocity = 0;
   for (int k = 0; k < 20000; ++k) {
     stepper.step(1000);
-    natural.constraints(stepper.y().head(3), start.parameters, psi, G, data);
+    run.natural.constraints(stepper.y().head(3), parameters, psi, G, data);
     position = std::max(position, std::abs(psi[0]));
     velocity = std::max(velocity, std::abs((G * stepper.y().tail(3))[0]));
   }

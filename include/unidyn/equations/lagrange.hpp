@@ -36,9 +36,14 @@ struct EquationsOfMotion {
 // Derives the equations of motion of a system by Lagrange's equations, approach I.
 EquationsOfMotion lagrange_equations(const System& system);
 
-// The pieces every form of the equations shares: Φ_i of the non-conservative loads, and the
-// constraint rows a_k, e_k, b_k, Ψ_k (into eq).
+// The pieces every form of the equations shares: Φ_i of the non-conservative loads; the
+// constraint rows a_k, e_k, b_k, Ψ_k (into eq); T, U, Φ and an n × n zero M to start from; and,
+// once M and the q̈-free part c_i of each row's inertia terms are known, the inertia terms
+// Σ_j M_ij q̈^j + c_i, f_i = Φ_i − ∂U/∂q^i − c_i and the constraint rows.
 std::vector<Expr> generalized_forces(const System& system);
 void constraint_rows(const System& system, EquationsOfMotion& eq);
+EquationsOfMotion energies_and_forces(const System& system);
+void finish_equations(const System& system, const std::vector<Expr>& convective,
+                      EquationsOfMotion& eq);
 
 }  // namespace unidyn
