@@ -3,11 +3,13 @@
 
 #include <stdexcept>
 
+#include "unidyn/symbolic/printing.hpp"
+
 namespace unidyn {
 namespace {
 
 bool vanishes(const Expr& e) {
-  return e.expand().is_zero();
+  return e.expand().is_zero() || simplify(e).is_zero();
 }
 
 // Why the system is not natural (empty when it is).
@@ -22,19 +24,20 @@ std::string obstacle(const System& system, const EquationsOfMotion& eq) {
     if (!vanishes(phi)) return "a non-conservative force";
   }
   if (eq.kinetic_energy.has(t) || eq.potential_energy.has(t)) return "T or U depends on t";
-  // T = ½ q̇ᵀ M q̇ with M free of q̇
+  // T = T2 + T1 + T0 (quadratic in q̇, book §4.x): T0 = T at q̇ = 0 and T1's coefficients
+  // ∂T/∂q̇ at q̇ = 0 must vanish, and M free of q̇ — checks that do not depend on the form of T
   const auto& q = system.coordinates();
-  Expr quadratic = 0;
-  for (std::size_t i = 0; i < q.size(); ++i) {
-    for (std::size_t j = 0; j < q.size(); ++j) {
-      const Expr& mij = eq.mass_matrix(i, j);
-      for (const auto& c : q) {
-        if (mij.has(c.rate)) return "M depends on the rates";
-      }
-      quadratic += mij * q[i].rate * q[j].rate / 2;
+  GiNaC::exmap at_rest;
+  for (const auto& c : q) at_rest[c.rate] = 0;
+  if (!vanishes(eq.kinetic_energy.subs(at_rest))) return "T0 (T at rest is not 0)";
+  for (const auto& c : q) {
+    if (!vanishes(eq.kinetic_energy.diff(c.rate).subs(at_rest))) return "T1 (gyroscopic terms)";
+  }
+  for (const Expr& mij : eq.mass_matrix.data) {
+    for (const auto& c : q) {
+      if (mij.has(c.rate)) return "M depends on the rates";
     }
   }
-  if (!vanishes(eq.kinetic_energy - quadratic)) return "T is not quadratic in the rates (T1, T0)";
   return {};
 }
 

@@ -3,6 +3,8 @@
 // and refused for systems that are not natural conservative ones.
 #include "unidyn/integrate/rattle.hpp"
 
+#include "unidyn/equations/kane.hpp"
+
 #include <cmath>
 
 #include "support/model_run.hpp"
@@ -123,6 +125,9 @@ TEST(Rattle, OnlyForNaturalSystems) {
     EXPECT_THROW(CompiledNaturalSystem(system, lagrange_equations(system)), std::invalid_argument)
         << name;
   }
+  // natural whatever form its equations take (Kane's M is not written as T's second derivatives)
+  const System top = load_model(test::model_path("heavy-top"));
+  EXPECT_NO_THROW(CompiledNaturalSystem(top, kane_equations(top)));
   const test::ModelRun run =
       test::run_model("heavy-top-socket", {}, [](SimulationOptions& o) { o.method = "rattle"; });
   EXPECT_FALSE(run.summary.ok);
