@@ -32,7 +32,9 @@ ROOT = os.path.dirname(HERE)
 
 def run(command, stdin=None, timeout=1800):
     """Run a command; its standard output (raises on a non-zero exit)."""
-    result = subprocess.run(command, input=stdin, capture_output=True, text=True, timeout=timeout)
+    # in a scratch directory: MuJoCo writes MUJOCO_LOG.TXT where it runs
+    result = subprocess.run(command, input=stdin, capture_output=True, text=True, timeout=timeout,
+                            cwd=tempfile.gettempdir())
     if result.returncode != 0:
         raise RuntimeError(f"{' '.join(command)} failed ({result.returncode}): "
                            f"{result.stderr.strip()[:500]}")
@@ -131,7 +133,7 @@ def write_states(states):
 
 class Bench:
     def __init__(self, build, quick):
-        self.build = build
+        self.build = os.path.abspath(build)
         self.quick = quick
         self.rng = random.Random(2026)
         self.unidyn = os.path.join(build, "bench", "unidyn_bench")

@@ -32,6 +32,7 @@ struct CvodeBdf::Solver {
   SUNContext context = nullptr;
   void* memory = nullptr;
   N_Vector y = nullptr;
+  N_Vector dky = nullptr;  // the derivatives of the step's polynomial, one at a time
   SUNMatrix jacobian = nullptr;
   SUNLinearSolver linear = nullptr;
   // CVODE's last error message, and its failure counters when it (re)started.
@@ -44,6 +45,7 @@ struct CvodeBdf::Solver {
     if (memory != nullptr) CVodeFree(&memory);
     if (linear != nullptr) SUNLinSolFree(linear);
     if (jacobian != nullptr) SUNMatDestroy(jacobian);
+    if (dky != nullptr) N_VDestroy(dky);
     if (y != nullptr) N_VDestroy(y);
     if (context != nullptr) SUNContext_Free(&context);
   }
@@ -122,9 +124,10 @@ void CvodeBdf::start_solver() {
     Solver& s = *solver_;
     if (SUNContext_Create(nullptr, &s.context) != 0) throw std::runtime_error("cvode: no context");
     s.y = N_VNew_Serial(n, s.context);
+    s.dky = N_VNew_Serial(n, s.context);
     s.jacobian = SUNDenseMatrix(n, n, s.context);
     s.memory = CVodeCreate(CV_BDF, s.context);
-    if (s.y == nullptr || s.jacobian == nullptr || s.memory == nullptr) {
+    if (s.y == nullptr || s.dky == nullptr || s.jacobian == nullptr || s.memory == nullptr) {
       throw std::runtime_error("cvode: out of memory");
     }
     s.linear = SUNLinSol_Dense(s.y, s.jacobian, s.context);
@@ -177,12 +180,10 @@ void CvodeBdf::advance(double t_limit) {
   CVodeGetLastStep(s.memory, &last_step_);
   last_order_ = order;
   taylor_.resize(static_cast<std::size_t>(order) + 1);
-  N_Vector dky = N_VClone(s.y);
   for (int k = 0; k <= order; ++k) {
-    CVodeGetDky(s.memory, t_new, k, dky);
-    taylor_[static_cast<std::size_t>(k)] = view(dky);
+    CVodeGetDky(s.memory, t_new, k, s.dky);
+    taylor_[static_cast<std::size_t>(k)] = view(s.dky);
   }
-  N_VDestroy(dky);
   Eigen::VectorXd y_new = view(s.y);
   if (!y_new.allFinite()) {
     throw IntegrationError(describe("the state became non-finite at t = " + detail::to_text(t_new)),

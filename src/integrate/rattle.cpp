@@ -42,25 +42,31 @@ void Rattle::before_reset_state() {
   y_end_ = y();
 }
 
-void Rattle::evaluate_at(const Eigen::VectorXd& q, const Eigen::VectorXd& p, double t_at) {
-  // M(q) is needed before q̇ = M⁻¹ p: the rates do not enter M, so any q̇ gives it
-  system_.mass_and_lagrangian_gradient(q, p, parameters_, mass_matrix_, gradient_, data_);
-  mass_.compute(mass_matrix_);
-  if (mass_.info() != Eigen::Success) {
+void Rattle::factor_mass(const Eigen::VectorXd& q, Eigen::LLT<Eigen::MatrixXd>& factor,
+                         double t_at) {
+  system_.mass_matrix(q, parameters_, mass_matrix_, data_);
+  ++mutable_stats().rhs_evaluations;
+  factor.compute(mass_matrix_);
+  if (factor.info() != Eigen::Success) {
     throw IntegrationError(describe("M is not positive definite at t = " + detail::to_text(t_at) +
                                     " (redundant coordinates such as Euler parameters, or a "
                                     "singular chart)"),
                            t_at);
   }
-  velocity_ = mass_.solve(p);
-  system_.mass_and_lagrangian_gradient(q, velocity_, parameters_, mass_matrix_, gradient_, data_);
-  mutable_stats().rhs_evaluations += 2;
+}
+
+const Eigen::VectorXd& Rattle::gradient_at(const Eigen::VectorXd& q,
+                                           const Eigen::LLT<Eigen::MatrixXd>& factor,
+                                           const Eigen::VectorXd& p) {
+  velocity_ = factor.solve(p);
+  system_.lagrangian_gradient(q, velocity_, parameters_, gradient_, data_);
+  ++mutable_stats().rhs_evaluations;
+  return gradient_;
 }
 
 void Rattle::momentum_from_state() {
   const auto n = static_cast<Eigen::Index>(system_.coordinate_count());
-  system_.mass_and_lagrangian_gradient(y().head(n), y().tail(n), parameters_, mass_matrix_,
-                                       gradient_, data_);
+  system_.mass_matrix(y().head(n), parameters_, mass_matrix_, data_);
   ++mutable_stats().rhs_evaluations;
   p_ = mass_matrix_ * y().tail(n);
   have_momentum_ = true;
@@ -81,11 +87,11 @@ void Rattle::advance(double t_limit) {
   Eigen::VectorXd psi;
   Eigen::MatrixXd G0, G1;
   system_.constraints(q0, parameters_, psi, G0, data_);
-  evaluate_at(q0, p0, t0);
-  const Eigen::LLT<Eigen::MatrixXd> M0 = mass_;
+  factor_mass(q0, M0_, t0);
+  const Eigen::LLT<Eigen::MatrixXd>& M0 = M0_;
 
   // First half: p½ and q1 by fixed-point iteration, λ by Newton's method inside.
-  Eigen::VectorXd p_half = p0 + 0.5 * h * gradient_;  // H_q = −∂L/∂q
+  Eigen::VectorXd p_half = p0 + 0.5 * h * gradient_at(q0, M0, p0);  // H_q = −∂L/∂q
   Eigen::VectorXd q1 = q0 + h * M0.solve(p_half);
   Eigen::VectorXd& lambda = lambda_;
   double change_previous = INFINITY;
@@ -97,10 +103,9 @@ void Rattle::advance(double t_limit) {
                              t0);
     }
     // p̃ = p0 + h/2 ∂L/∂q(q0, M0⁻¹ p½)
-    evaluate_at(q0, p_half, t0);
-    const Eigen::VectorXd p_tilde = p0 + 0.5 * h * gradient_;
+    const Eigen::VectorXd p_tilde = p0 + 0.5 * h * gradient_at(q0, M0, p_half);
     // W = h/2 (M0⁻¹ + M1⁻¹), M1 at the current q1
-    evaluate_at(q1, p_half, t0);
+    factor_mass(q1, mass_, t0);
     const Eigen::LLT<Eigen::MatrixXd>& M1 = mass_;
     const auto W = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
       return 0.5 * h * (M0.solve(v) + M1.solve(v));
@@ -130,8 +135,8 @@ void Rattle::advance(double t_limit) {
 
   // Second half, explicit: p* = p½ + h/2 ∂L/∂q(q1, M1⁻¹ p½), p1 = p* − h/2 G1ᵀ μ with G1 M1⁻¹ p1 =
   // 0.
-  evaluate_at(q1, p_half, t1);
-  Eigen::VectorXd p1 = p_half + 0.5 * h * gradient_;
+  factor_mass(q1, mass_, t1);
+  Eigen::VectorXd p1 = p_half + 0.5 * h * gradient_at(q1, mass_, p_half);
   if (m > 0) {
     system_.constraints(q1, parameters_, psi, G1, data_);
     const Eigen::MatrixXd M1_inv_G1t = mass_.solve(G1.transpose());

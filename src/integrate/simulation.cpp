@@ -7,7 +7,7 @@
 #include <optional>
 #include <sstream>
 
-#include "unidyn/equations/lagrange.hpp"
+#include "unidyn/equations/kane.hpp"
 #include "unidyn/integrate/contacts.hpp"
 #include "unidyn/integrate/cvode.hpp"
 #include "unidyn/integrate/dormand_prince.hpp"
@@ -346,7 +346,7 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     std::optional<CompiledNaturalSystem> natural;
     std::unique_ptr<Stepper> stepper;
     if (symplectic) {
-      natural.emplace(system, lagrange_equations(system));
+      natural.emplace(system, kane_equations(system));
       RattleOptions o;
       o.step = fixed_step(options);
       stepper = std::make_unique<Rattle>(*natural, start.parameters, o);

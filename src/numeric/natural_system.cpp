@@ -1,6 +1,7 @@
 // Natural conservative systems: the checks that make them so, and their compiled M, ∂L/∂q, Ψ, G.
 #include "unidyn/numeric/natural_system.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "unidyn/symbolic/printing.hpp"
@@ -60,11 +61,12 @@ CompiledNaturalSystem::CompiledNaturalSystem(const System& system, const Equatio
         why);
   }
   const auto& q = system.coordinates();
-  // M and ∂L/∂q = ∂T/∂q − ∂U/∂q
-  std::vector<Expr> outputs = eq.mass_matrix.data;
+  // M, and ∂L/∂q = ∂T/∂q − ∂U/∂q
+  mass_ = Tape::compile(eq.mass_matrix.data, inputs_of(system));
+  std::vector<Expr> outputs;
   const Expr lagrangian = eq.kinetic_energy - eq.potential_energy;
   for (const auto& c : q) outputs.push_back(lagrangian.diff(c.value));
-  dynamics_ = Tape::compile(outputs, inputs_of(system));
+  gradient_ = Tape::compile(outputs, inputs_of(system));
   // Ψ and G = ∂Ψ/∂q
   outputs.clear();
   for (const Constraint& c : system.constraints) outputs.push_back(c.expression);
@@ -76,10 +78,12 @@ CompiledNaturalSystem::CompiledNaturalSystem(const System& system, const Equatio
 
 NaturalSystemData CompiledNaturalSystem::make_data() const {
   NaturalSystemData data;
-  data.workspace.reserve(dynamics_);
+  data.workspace.reserve(mass_);
+  data.workspace.reserve(gradient_);
   data.workspace.reserve(constraints_);
   data.inputs.resize(2 * n_ + p_);
-  data.outputs.resize(std::max(dynamics_.output_count(), constraints_.output_count()));
+  data.outputs.resize(
+      std::max({mass_.output_count(), gradient_.output_count(), constraints_.output_count()}));
   return data;
 }
 
@@ -95,16 +99,25 @@ void CompiledNaturalSystem::load(const Eigen::VectorXd& q, const Eigen::VectorXd
   for (std::size_t k = 0; k < p_; ++k) data.inputs[2 * n_ + k] = parameters[k];
 }
 
-void CompiledNaturalSystem::mass_and_lagrangian_gradient(
-    const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, std::span<const double> parameters,
-    Eigen::MatrixXd& mass, Eigen::VectorXd& gradient, NaturalSystemData& data) const {
-  load(q, &qdot, parameters, data);
-  dynamics_.evaluate(data.inputs, std::span(data.outputs.data(), dynamics_.output_count()),
-                     data.workspace);
+void CompiledNaturalSystem::mass_matrix(const Eigen::VectorXd& q,
+                                        std::span<const double> parameters, Eigen::MatrixXd& mass,
+                                        NaturalSystemData& data) const {
+  load(q, nullptr, parameters, data);
+  mass_.evaluate(data.inputs, std::span(data.outputs.data(), mass_.output_count()), data.workspace);
   const auto N = static_cast<Eigen::Index>(n_);
   mass = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
       data.outputs.data(), N, N);
-  gradient = Eigen::Map<const Eigen::VectorXd>(data.outputs.data() + n_ * n_, N);
+}
+
+void CompiledNaturalSystem::lagrangian_gradient(const Eigen::VectorXd& q,
+                                                const Eigen::VectorXd& qdot,
+                                                std::span<const double> parameters,
+                                                Eigen::VectorXd& gradient,
+                                                NaturalSystemData& data) const {
+  load(q, &qdot, parameters, data);
+  gradient_.evaluate(data.inputs, std::span(data.outputs.data(), gradient_.output_count()),
+                     data.workspace);
+  gradient = Eigen::Map<const Eigen::VectorXd>(data.outputs.data(), static_cast<Eigen::Index>(n_));
 }
 
 void CompiledNaturalSystem::constraints(const Eigen::VectorXd& q,

@@ -35,7 +35,7 @@ struct RattleOptions {
 
 // State y = (q, q̇). Dense output: the cubic Hermite interpolant of q with q̇ at both ends, q̇
 // linear (both within the method's second order). rhs_evaluations counts evaluations of M and
-// ∂L/∂q.
+// of ∂L/∂q.
 class Rattle final : public Stepper {
  public:
   // Throws std::invalid_argument for a step that is not positive and finite.
@@ -55,8 +55,12 @@ class Rattle final : public Stepper {
 
   // p = M(q) q̇ at the current state.
   void momentum_from_state();
-  // M(q) and ∂L/∂q at (q, M⁻¹ p); the factorisation of M into mass_.
-  void evaluate_at(const Eigen::VectorXd& q, const Eigen::VectorXd& p, double t_at);
+  // The Cholesky factor of M(q) into `factor` (IntegrationError when M is not positive definite).
+  void factor_mass(const Eigen::VectorXd& q, Eigen::LLT<Eigen::MatrixXd>& factor, double t_at);
+  // ∂L/∂q at (q, M⁻¹ p), M given by its factor.
+  const Eigen::VectorXd& gradient_at(const Eigen::VectorXd& q,
+                                     const Eigen::LLT<Eigen::MatrixXd>& factor,
+                                     const Eigen::VectorXd& p);
 
   const CompiledNaturalSystem& system_;
   std::vector<double> parameters_;
@@ -68,9 +72,10 @@ class Rattle final : public Stepper {
   bool have_momentum_ = false;
   // The multiplier λ of the last step (the next step's first guess).
   Eigen::VectorXd lambda_;
-  // Workspace of evaluate_at: M, its Cholesky factor, q̇ = M⁻¹ p and ∂L/∂q there.
+  // Workspace: M, the factors of M at the step's start (M0_) and at the current q1 (mass_),
+  // q̇ = M⁻¹ p and ∂L/∂q.
   Eigen::MatrixXd mass_matrix_;
-  Eigen::LLT<Eigen::MatrixXd> mass_;
+  Eigen::LLT<Eigen::MatrixXd> M0_, mass_;
   Eigen::VectorXd velocity_, gradient_;
   // Dense output: the state at the start of the last step, and at its end as computed (kept
   // when reset_state() replaces it).

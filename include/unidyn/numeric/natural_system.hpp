@@ -31,10 +31,12 @@ class CompiledNaturalSystem {
   std::size_t constraint_count() const { return m_; }
   NaturalSystemData make_data() const;
 
-  // M(q) and ∂L/∂q = ∂T/∂q − ∂U/∂q at (q, q̇).
-  void mass_and_lagrangian_gradient(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
-                                    std::span<const double> parameters, Eigen::MatrixXd& mass,
-                                    Eigen::VectorXd& gradient, NaturalSystemData& data) const;
+  // M(q), and ∂L/∂q = ∂T/∂q − ∂U/∂q at (q, q̇): separate, since M does not depend on q̇.
+  void mass_matrix(const Eigen::VectorXd& q, std::span<const double> parameters,
+                   Eigen::MatrixXd& mass, NaturalSystemData& data) const;
+  void lagrangian_gradient(const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+                           std::span<const double> parameters, Eigen::VectorXd& gradient,
+                           NaturalSystemData& data) const;
   // Ψ(q) and G = ∂Ψ/∂q.
   void constraints(const Eigen::VectorXd& q, std::span<const double> parameters,
                    Eigen::VectorXd& psi, Eigen::MatrixXd& jacobian, NaturalSystemData& data) const;
@@ -45,8 +47,9 @@ class CompiledNaturalSystem {
             std::span<const double> parameters, NaturalSystemData& data) const;
 
   std::size_t n_ = 0, m_ = 0, p_ = 0;
-  Tape dynamics_;     // [q, q̇, p] → M (row-major), ∂L/∂q
-  Tape constraints_;  // [q, q̇, p] → Ψ, G (row-major)
+  Tape mass_;         // [q, q̇, p] → M (row-major); q̇ unused
+  Tape gradient_;     // [q, q̇, p] → ∂L/∂q
+  Tape constraints_;  // [q, q̇, p] → Ψ, G (row-major); q̇ unused
 };
 
 }  // namespace unidyn
