@@ -647,10 +647,6 @@ std::vector<double> Tape::evaluate(std::span<const double> inputs) const {
   return outputs;
 }
 
-bool Tape::reads_second_operand(TapeOp op) {
-  return is_binary(op);
-}
-
 std::string Tape::listing() const {
   std::ostringstream os;
   os.precision(17);

@@ -120,8 +120,6 @@ class Tape {
   // register each output is read from: with instructions(), the whole program (for native code).
   std::span<const double> constants() const { return constants_; }
   std::span<const std::uint32_t> output_registers() const { return output_registers_; }
-  // Whether an operation reads its second operand b (sincos writes it instead).
-  static bool reads_second_operand(TapeOp op);
 
  private:
   std::vector<std::string> input_names_;       // registers [0, input_count)
