@@ -8,7 +8,7 @@ packages=(
   build-essential cmake ninja-build pkg-config clang-format
   # libraries (DESIGN.md "Dependencies")
   libeigen3-dev libginac-dev libcln-dev libsundials-dev libyaml-cpp-dev
-  libcli11-dev libfmt-dev
+  libcli11-dev libfmt-dev libssl-dev
   # tests and micro benchmarks
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   # side-by-side benchmark peers (bench/)

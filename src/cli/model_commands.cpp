@@ -76,22 +76,23 @@ std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::st
   return overrides;
 }
 
-// The text of the model file named on the command line (empty when it cannot be read).
-std::string read_model_text(const ModelCommands& c) {
-  std::ifstream in(resolve_model(c.model));
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// The model named on the command line; with --reduced, its approach-II form (the notes on what
-// was eliminated go to standard error).
-System command_model(const ModelCommands& c) {
-  System system = load_model(resolve_model(c.model));
-  if (!c.reduced) return system;
+// The model named on the command line, read once, and the text it was read from; with --reduced,
+// its approach-II form (the notes on what was eliminated go to standard error).
+struct CommandModel {
+  System system;
+  std::string text;
+};
+CommandModel read_command_model(const ModelCommands& c) {
+  const std::string path = resolve_model(c.model);
+  std::string text = read_model_text(path);
+  System system = parse_model(text, path);
+  if (!c.reduced) return {std::move(system), std::move(text)};
   Reduction reduction = eliminate_constraints(system);
   for (const auto& note : reduction.notes) fmt::print(stderr, "approach II: {}\n", note);
-  return std::move(reduction.system);
+  return {std::move(reduction.system), std::move(text)};
+}
+System command_model(const ModelCommands& c) {
+  return read_command_model(c).system;
 }
 
 EquationFormat parse_format(const std::string& format) {
@@ -205,15 +206,15 @@ SimulationOptions options_for(const System& system, const ModelCommands& c) {
 }
 
 int run_simulate(const ModelCommands& c) {
-  const System system = command_model(c);
+  const CommandModel model = read_command_model(c);
+  const System& system = model.system;
   const SimulationStart start = initial_state(system, parse_sets(c.sets));
   const SimulationOptions options = options_for(system, c);
   const auto clock_start = std::chrono::steady_clock::now();
   CompileOptions compile_options;
   compile_options.native = c.evaluation == "native";
-  // the cache of native code is keyed by the model's text (and how it was reduced)
-  compile_options.native_options.key =
-      std::string(c.reduced ? "reduced\n" : "full\n") + read_model_text(c);
+  // the cache of native code is keyed by the bytes that were parsed (and how they were reduced)
+  compile_options.native_options.key = std::string(c.reduced ? "reduced\n" : "full\n") + model.text;
   // the numerics take M and f through partial velocities: the same equations as Lagrange's
   // (tested on every bundled model), derived faster and with fewer operations
   const CompiledSystem compiled(system, kane_equations(system), compile_options);

@@ -1128,12 +1128,17 @@ System parse_model(const std::string& text, const std::string& file) {
   }
 }
 
-System load_model(const std::string& path) {
-  std::ifstream in(path);
+std::string read_model_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw ModelError({path, 0, 0}, "cannot open the model file");
   std::stringstream text;
   text << in.rdbuf();
-  return parse_model(text.str(), path);
+  if (in.bad()) throw ModelError({path, 0, 0}, "cannot read the model file");
+  return text.str();
+}
+
+System load_model(const std::string& path) {
+  return parse_model(read_model_text(path), path);
 }
 
 }  // namespace unidyn

@@ -94,10 +94,13 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
     native_functions_ = {
         native_->function("unidyn_dynamics"), native_->function("unidyn_constraints"),
         native_->function("unidyn_observer"), native_->function("unidyn_friction")};
-    evaluation_ = native_->cached()
-                      ? "native code (cached: " + native_->path() + ")"
-                      : "native code (compiled in " + std::to_string(native_->compile_seconds()) +
-                            " s: " + native_->path() + ")";
+    const std::string compiled = "compiled in " + std::to_string(native_->compile_seconds()) + " s";
+    evaluation_ = "native code (" +
+                  (native_->cached() ? "cached: " + native_->path()
+                   : native_->kept() ? compiled + ": " + native_->path()
+                                     : compiled) +
+                  ")";
+    if (!native_->notes().empty()) evaluation_ += "; " + native_->notes();
   } catch (const NativeCodeError& error) {
     native_.reset();
     evaluation_ = std::string("tape (") + error.what() + ")";

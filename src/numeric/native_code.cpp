@@ -1,107 +1,67 @@
-// Tapes printed as C++, compiled by the system compiler, cached by the hash of source and
-// command, and loaded with dlopen.
+// Native code: the tapes' source, compiled by the system compiler, kept in the cache under the
+// SHA-256 of its key, and loaded with dlopen only after the library has shown its key and
+// signature.
 #include "unidyn/numeric/native_code.hpp"
 
 #include <dlfcn.h>
+#include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
-#include <cmath>
-#include <cstdint>
-#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include "unidyn/numeric/code_cache.hpp"
+#include "unidyn/numeric/digest.hpp"
+
+#ifndef UNIDYN_VERSION
+#define UNIDYN_VERSION "unknown"
+#endif
 
 namespace unidyn {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A double as an exact C++ literal (hexadecimal floating point), infinities and NaN included.
-std::string literal(double value) {
-  if (std::isnan(value)) return "__builtin_nan(\"\")";
-  if (std::isinf(value)) return value > 0 ? "__builtin_inf()" : "(-__builtin_inf())";
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%a", value);
-  return buffer;
-}
-
-// The C++ expression of a single-result operation on x = r[a] (and r[b]); as the tape's execute().
-std::string operation(TapeOp op, const std::string& x, const std::string& y) {
-  switch (op) {
-    case TapeOp::add:
-      return x + " + " + y;
-    case TapeOp::sub:
-      return x + " - " + y;
-    case TapeOp::mul:
-      return x + " * " + y;
-    case TapeOp::div:
-      return x + " / " + y;
-    case TapeOp::neg:
-      return "-" + x;
-    case TapeOp::recip:
-      return "1.0 / " + x;
-    case TapeOp::sqrt:
-      return "std::sqrt(" + x + ")";
-    case TapeOp::pow:
-      return "std::pow(" + x + ", " + y + ")";
-    case TapeOp::sin:
-      return "std::sin(" + x + ")";
-    case TapeOp::cos:
-      return "std::cos(" + x + ")";
-    case TapeOp::sincos:
-      break;  // two results: written by the caller
-    case TapeOp::tan:
-      return "std::tan(" + x + ")";
-    case TapeOp::asin:
-      return "std::asin(" + x + ")";
-    case TapeOp::acos:
-      return "std::acos(" + x + ")";
-    case TapeOp::atan:
-      return "std::atan(" + x + ")";
-    case TapeOp::atan2:
-      return "std::atan2(" + x + ", " + y + ")";
-    case TapeOp::sinh:
-      return "std::sinh(" + x + ")";
-    case TapeOp::cosh:
-      return "std::cosh(" + x + ")";
-    case TapeOp::tanh:
-      return "std::tanh(" + x + ")";
-    case TapeOp::exp:
-      return "std::exp(" + x + ")";
-    case TapeOp::log:
-      return "std::log(" + x + ")";
-    case TapeOp::abs:
-      return "std::fabs(" + x + ")";
-    case TapeOp::sign:
-      return "(" + x + " > 0.0 ? 1.0 : (" + x + " < 0.0 ? -1.0 : 0.0))";
-    case TapeOp::step:
-      return "(" + x + " > 0.0 ? 1.0 : (" + x + " < 0.0 ? 0.0 : 0.5))";
-  }
-  return {};
-}
-
-// FNV-1a of text: the same in every run.
-std::uint64_t hash_text(std::string_view text) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (const char c : text) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
-  return h;
-}
-
 std::string environment(const char* name) {
   const char* value = std::getenv(name);
   return value != nullptr ? value : "";
 }
 
-fs::path cache_directory(const NativeOptions& options) {
-  if (!options.cache_directory.empty()) return options.cache_directory;
-  if (const std::string d = environment("UNIDYN_CACHE_DIR"); !d.empty()) return d;
-  if (const std::string d = environment("XDG_CACHE_HOME"); !d.empty())
-    return fs::path(d) / "unidyn";
-  if (const std::string d = environment("HOME"); !d.empty()) return fs::path(d) / ".cache/unidyn";
-  return "/tmp/unidyn-cache";
+// The compiler as the shell finds it (through PATH when it has no slash), resolved to its file.
+fs::path resolve_executable(const std::string& command) {
+  std::vector<fs::path> candidates;
+  if (command.find('/') != std::string::npos) {
+    candidates.emplace_back(command);
+  } else {
+    std::stringstream path(environment("PATH"));
+    for (std::string directory; std::getline(path, directory, ':');) {
+      candidates.push_back(fs::path(directory.empty() ? "." : directory) / command);
+    }
+  }
+  for (const fs::path& candidate : candidates) {
+    if (::access(candidate.c_str(), X_OK) != 0) continue;
+    char* resolved = ::realpath(candidate.c_str(), nullptr);
+    if (resolved == nullptr) continue;
+    const fs::path file(resolved);
+    std::free(resolved);
+    return file;
+  }
+  return {};
+}
+
+// The compiler's identity: its resolved file, size and time of change. A changed compiler (an
+// upgrade, another alternative) gives other code, so another key.
+std::string compiler_identity(const std::string& compiler) {
+  const fs::path file = resolve_executable(compiler);
+  struct stat s {};
+  if (file.empty() || ::stat(file.c_str(), &s) != 0) return compiler + " (not found)";
+  return compiler + " = " + file.string() + " " + std::to_string(s.st_size) + " bytes, changed " +
+         std::to_string(s.st_mtim.tv_sec) + "." + std::to_string(s.st_mtim.tv_nsec);
 }
 
 // Text in single quotes for the shell.
@@ -118,102 +78,221 @@ std::string read_text(const fs::path& path) {
   return text.str();
 }
 
-}  // namespace
+// What a library must say of itself before it is called: its key (SHA-256 of the key text), its
+// signature (one line per function: name, inputs, outputs) and, when freshly compiled, the SHA-256
+// of the functions' source ("" when any will do: a cached library of this key).
+struct Identity {
+  std::string key;
+  std::string signature;
+  std::string source;
+};
 
-std::string tape_source(const Tape& tape, std::string_view name) {
-  std::ostringstream os;
-  const std::size_t inputs = tape.input_count(), constants = tape.constant_count();
-  os << "extern \"C\" void " << name << "(const double* in, double* out) {\n";
-  // registers: inputs, constants, then temporaries (reused as in the tape)
-  for (std::size_t r = 0; r < tape.register_count(); ++r) {
-    os << "  double r" << r;
-    if (r < inputs) os << " = in[" << r << "]";
-    if (r >= inputs && r < inputs + constants) os << " = " << literal(tape.constants()[r - inputs]);
-    os << ";\n";
-  }
-  os << "  (void)in;\n";
-  for (const TapeInstruction& i : tape.instructions()) {
-    const std::string x = "r" + std::to_string(i.a), y = "r" + std::to_string(i.b);
-    if (i.op == TapeOp::sincos) {
-      os << "  { const double x = " << x << "; r" << i.dst << " = std::sin(x); " << y
-         << " = std::cos(x); }\n";
-    } else {
-      os << "  r" << i.dst << " = " << operation(i.op, x, y) << ";\n";
-    }
-  }
-  for (std::size_t k = 0; k < tape.output_count(); ++k) {
-    os << "  out[" << k << "] = r" << tape.output_registers()[k] << ";\n";
-  }
-  os << "}\n";
-  return os.str();
+// The C++ definitions through which a library says what it is.
+std::string identity_definitions(const Identity& identity) {
+  std::string text = "\nextern \"C\" const char unidyn_library_key[] = \"" + identity.key + "\";\n";
+  text += "extern \"C\" const char unidyn_library_source[] = \"" + identity.source + "\";\n";
+  text += "extern \"C\" const char unidyn_library_signature[] =\n";
+  std::stringstream lines(identity.signature);
+  for (std::string line; std::getline(lines, line);) text += "    \"" + line + "\\n\"\n";
+  return text + "    \"\";\n";
 }
+
+// A library that does not prove to be the one expected.
+class Refused : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// This process already has another library loaded under the entry's file name (only two keys that
+// share a name can do that): dlopen would return it again, so the entry cannot be loaded here.
+class NameTaken : public NativeCodeError {
+ public:
+  using NativeCodeError::NativeCodeError;
+};
+
+// dlopen the checked library file and compare what it says of itself with `expected` before any
+// of its functions is looked up. Throws Refused (nothing kept loaded) when anything differs.
+void* load_checked(const CacheEntry& entry, const Identity& expected) {
+  // dlopen returns a library already loaded under this name, whatever the file now holds
+  void* handle = ::dlopen(entry.library.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_NOLOAD);
+  const bool already_loaded = handle != nullptr;
+  if (!already_loaded) handle = ::dlopen(entry.library.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (handle == nullptr) {
+    const char* why = ::dlerror();
+    throw Refused(std::string("it does not load: ") + (why != nullptr ? why : "unknown error"));
+  }
+  const auto text = [&](const char* symbol) -> std::string {
+    const void* address = ::dlsym(handle, symbol);
+    return address != nullptr ? static_cast<const char*>(address) : "(none)";
+  };
+  std::string why;
+  struct stat s {};
+  if (!already_loaded && (::stat(entry.library.c_str(), &s) != 0 || s.st_dev != entry.device ||
+                          s.st_ino != entry.inode)) {
+    why = "the file changed while it was loaded";
+  } else if (text("unidyn_library_key") != expected.key) {
+    why = "its key is " + text("unidyn_library_key") + ", not " + expected.key;
+  } else if (text("unidyn_library_signature") != expected.signature) {
+    why = "its signature differs";
+  } else if (!already_loaded && !expected.source.empty() &&
+             text("unidyn_library_source") != expected.source) {
+    why = "its source is not the one just compiled";
+  }
+  if (why.empty()) return handle;
+  ::dlclose(handle);
+  if (already_loaded) {
+    throw NameTaken("native code: this process has another library loaded from " +
+                    entry.library.string() + " (" + why + ")");
+  }
+  throw Refused(why);
+}
+
+// Compiles `source` in the private directory `build`; returns the library's path.
+fs::path compile(const std::string& compiler, const std::string& flags, const std::string& source,
+                 const fs::path& build, double& seconds) {
+  const fs::path cpp = build / "library.cpp", library = build / "library.so",
+                 log = build / "compiler.log";
+  write_new_file(cpp, source);
+  const std::string command = shell_quoted(compiler) + " " + flags + " -o " +
+                              shell_quoted(library.string()) + " " + shell_quoted(cpp.string()) +
+                              " > " + shell_quoted(log.string()) + " 2>&1";
+  const auto start = std::chrono::steady_clock::now();
+  const int status = std::system(command.c_str());
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::error_code error;
+  if (status != 0 || !fs::exists(library, error)) {
+    const std::string diagnostics = read_text(log);
+    throw NativeCodeError("native code: '" + compiler + " " + flags + "' failed (status " +
+                          std::to_string(status) + ")" +
+                          (diagnostics.empty() ? "" : ": " + diagnostics.substr(0, 2000)));
+  }
+  return library;
+}
+
+// The entry of a file outside the cache (a private temporary directory): intact by construction.
+CacheEntry private_entry(const fs::path& library) {
+  CacheEntry entry;
+  entry.library = library;
+  struct stat s {};
+  if (::stat(library.c_str(), &s) != 0) throw NativeCodeError("native code: " + library.string());
+  entry.state = CacheEntry::State::intact;
+  entry.device = s.st_dev;
+  entry.inode = s.st_ino;
+  return entry;
+}
+
+std::string seconds_text(double seconds) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", seconds);
+  return buffer;
+}
+
+}  // namespace
 
 std::shared_ptr<const NativeLibrary> NativeLibrary::build(
     const std::vector<std::pair<std::string, const Tape*>>& functions,
     const NativeOptions& options) {
-  // The source of every function, and the command that compiles it.
-  std::string source = "// generated by unidyn: compiled equations\n#include <cmath>\n";
-  for (const auto& [name, tape] : functions) source += "\n" + tape_source(*tape, name);
+  // The functions' source, their signature, and the compiler.
+  std::string body = "#include <cmath>\n";
+  Identity identity;
+  for (const auto& [name, tape] : functions) {
+    body += "\n" + tape_source(*tape, name);
+    identity.signature += name + " " + std::to_string(tape->input_count()) + " " +
+                          std::to_string(tape->output_count()) + "\n";
+  }
+  identity.source = sha256_hex(body);
   std::string compiler = options.compiler;
   if (compiler.empty()) compiler = environment("CXX");
   if (compiler.empty()) compiler = "c++";
-  const std::string command_text = compiler + " " + options.flags;
-  // the key: the functions' signatures, the command, and the source or the caller's key
-  std::string identity = "unidyn native code v1\n" + command_text + "\n";
-  for (const auto& [name, tape] : functions) {
-    identity += name + " " + std::to_string(tape->input_count()) + " " +
-                std::to_string(tape->output_count()) + "\n";
-  }
-  identity += options.key.empty() ? source : options.key;
-  char key[32];
-  std::snprintf(key, sizeof key, "%016llx", static_cast<unsigned long long>(hash_text(identity)));
+  // The key: everything that determines the library.
+  const std::string key_text = "unidyn native code v2\nunidyn " UNIDYN_VERSION "\ncompiler " +
+                               compiler_identity(compiler) + "\nflags " + options.flags + "\n" +
+                               identity.signature + "key\n" +
+                               (options.key.empty() ? body : options.key);
+  identity.key = sha256_hex(key_text);
+  const std::string name = options.entry_name ? options.entry_name(key_text) : identity.key;
+  const std::string source =
+      "// generated by unidyn: compiled equations\n" + body + identity_definitions(identity);
 
   std::shared_ptr<NativeLibrary> library(new NativeLibrary);
   library->source_bytes_ = source.size();
-  const fs::path directory = cache_directory(options);
-  const fs::path so = directory / (std::string(key) + ".so");
-  library->path_ = so.string();
-  std::error_code error;
-  if (fs::exists(so, error)) {
-    library->cached_ = true;
-  } else {
-    fs::create_directories(directory, error);
-    if (error) {
-      throw NativeCodeError("native code: cannot create the cache directory " + directory.string() +
-                            ": " + error.message());
+  const auto note = [&](const std::string& text) {
+    library->notes_ += (library->notes_.empty() ? "" : "; ") + text;
+  };
+  const auto accept = [&](void* handle, const CacheEntry& entry) {
+    library->handle_ = handle;
+    library->path_ = entry.library.string();
+    return library;
+  };
+  try {
+    const CacheLocation location(options.cache_directory);
+    note(location.note());
+    if (!location.persistent()) {
+      // compiled and loaded from a private temporary directory, removed after loading
+      library->kept_ = false;
+      const CacheEntry entry = private_entry(compile(
+          compiler, options.flags, source, location.directory(), library->compile_seconds_));
+      return accept(load_checked(entry, identity), entry);
     }
-    // compile under a name of this process, then rename: another process may be at it too
-    const std::string unique = std::string(key) + "." + std::to_string(::getpid());
-    const fs::path cpp = directory / (unique + ".cpp"), partial = directory / (unique + ".so");
-    const fs::path log = directory / (unique + ".log");
-    std::ofstream(cpp) << source;
-    const std::string command = shell_quoted(compiler) + " " + options.flags + " -o " +
-                                shell_quoted(partial.string()) + " " + shell_quoted(cpp.string()) +
-                                " > " + shell_quoted(log.string()) + " 2>&1";
-    const auto start = std::chrono::steady_clock::now();
-    const int status = std::system(command.c_str());
-    library->compile_seconds_ =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::string diagnostics = read_text(log);
-    fs::remove(cpp, error);
-    fs::remove(log, error);
-    if (status != 0 || !fs::exists(partial, error)) {
-      fs::remove(partial, error);
-      throw NativeCodeError("native code: '" + command_text + "' failed (status " +
-                            std::to_string(status) + ")" +
-                            (diagnostics.empty() ? "" : ": " + diagnostics.substr(0, 2000)));
+    const fs::path& directory = location.directory();
+    // A cached library: checked and loaded while nobody may replace it.
+    {
+      const EntryLock shared(directory, name, false);
+      if (shared.waited_seconds() > 0.01) {
+        note("waited " + seconds_text(shared.waited_seconds()) + " s for another compilation");
+      }
+      const CacheEntry entry = inspect_entry(directory, name);
+      if (entry.state == CacheEntry::State::intact) {
+        try {
+          library->cached_ = true;
+          return accept(load_checked(entry, {identity.key, identity.signature, ""}), entry);
+        } catch (const Refused&) {
+          library->cached_ = false;  // decided below, under the exclusive lock
+        }
+      }
     }
-    fs::rename(partial, so, error);
-    if (error) throw NativeCodeError("native code: cannot store " + so.string());
+    // Made by one process at a time: the others wait for it here and then find it cached.
+    const EntryLock exclusive(directory, name, true);
+    if (exclusive.waited_seconds() > 0.01) {
+      note("waited " + seconds_text(exclusive.waited_seconds()) + " s for another compilation");
+    }
+    CacheEntry entry = inspect_entry(directory, name);
+    std::string refused = entry.state == CacheEntry::State::damaged ? entry.why : "";
+    if (entry.state == CacheEntry::State::intact) {
+      try {
+        library->cached_ = true;
+        return accept(load_checked(entry, {identity.key, identity.signature, ""}), entry);
+      } catch (const Refused& why) {
+        library->cached_ = false;
+        refused = why.what();
+      }
+    }
+    if (!refused.empty()) {
+      remove_entry(directory, name);
+      note("the cached library " + name + ".so was refused (" + refused + ") and compiled again");
+    }
+    const BuildDirectory build(directory);
+    store_entry(directory, name,
+                compile(compiler, options.flags, source, build.path(), library->compile_seconds_));
+    entry = inspect_entry(directory, name);
+    if (entry.state != CacheEntry::State::intact) {
+      throw NativeCodeError("native code: the library just stored is damaged: " + entry.why);
+    }
+    try {
+      return accept(load_checked(entry, identity), entry);
+    } catch (const Refused& why) {
+      remove_entry(directory, name);
+      throw NativeCodeError("native code: the library just compiled is refused: " +
+                            std::string(why.what()));
+    }
+  } catch (const Refused& why) {
+    throw NativeCodeError("native code: the library just compiled is refused: " +
+                          std::string(why.what()));
+  } catch (const NativeCodeError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw NativeCodeError(std::string("native code: ") + e.what());
   }
-  library->handle_ = ::dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (library->handle_ == nullptr) {
-    const char* why = ::dlerror();
-    fs::remove(so, error);  // a damaged cached library: the next build compiles it again
-    throw NativeCodeError("native code: cannot load " + so.string() + ": " +
-                          (why != nullptr ? why : "unknown error"));
-  }
-  return library;
 }
 
 NativeLibrary::~NativeLibrary() {

@@ -1,15 +1,25 @@
 // Native code: every tape operation compiled by the system compiler gives the tape's own value,
-// bit for bit; the cache by source hash; failures that leave the tape in charge.
+// bit for bit; the cache by key; a library that does not prove its key and signature is never
+// called (a collision of names, a forged library, a damaged file); one compilation among
+// concurrent builds; failures that leave the tape in charge.
 #include "unidyn/numeric/native_code.hpp"
+
+#include "unidyn/numeric/digest.hpp"
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <numbers>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace unidyn {
@@ -110,9 +120,181 @@ TEST(NativeCode, FailuresSayWhy) {
   } catch (const NativeCodeError& error) {
     EXPECT_NE(std::string(error.what()).find("no-such-flag"), std::string::npos) << error.what();
   }
-  // nothing half-made is left in the cache
+  // nothing half-made is left in the cache (only the entry's lock)
   for (const auto& entry : std::filesystem::directory_iterator(bad_flag.cache_directory)) {
-    ADD_FAILURE() << entry.path();
+    if (entry.path().extension() != ".lock") ADD_FAILURE() << entry.path();
+  }
+}
+
+// A small tape of other sizes than every_operation(): 1 input, 2 outputs.
+Tape small_tape() {
+  const GiNaC::realsymbol x("x");
+  return Tape::compile({x * x + 1, GiNaC::sin(x)}, std::vector<GiNaC::realsymbol>{x});
+}
+
+// Every output of `f` equals the tape's at a few inputs.
+void expect_tape_results(const Tape& tape, NativeFunction f) {
+  std::vector<double> in(tape.input_count(), 0.25), out(tape.output_count());
+  in[0] = 0.5;
+  f(in.data(), out.data());
+  const std::vector<double> expected = tape.evaluate(in);
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    if (!std::isnan(expected[k])) {
+      EXPECT_EQ(out[k], expected[k]) << k;
+    }
+  }
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+std::string every_name_collides(std::string_view) {
+  return "collision";
+}
+
+// Two keys that share a file, as a collision of the hash would make them: the second build finds
+// the first's library, which says another key, so it is refused before any of its functions is
+// looked up, removed and compiled again. (The small tape's library would write 2 outputs where
+// every_operation() has 16, and read 1 input of 3.)
+TEST(NativeCode, ALibraryOfAnotherKeyIsNeverCalled) {
+  NativeOptions options = in_temporary_cache("collision");
+  options.entry_name = &every_name_collides;
+  const Tape small = small_tape(), big = every_operation();
+  {
+    const auto first = NativeLibrary::build({{"f", &small}}, options);
+    EXPECT_FALSE(first->cached());
+    expect_tape_results(small, first->function("f"));
+  }
+  auto second = NativeLibrary::build({{"f", &big}}, options);
+  EXPECT_FALSE(second->cached());
+  EXPECT_TRUE(contains(second->notes(), "refused (its key is")) << second->notes();
+  expect_tape_results(big, second->function("f"));
+  // While the big tape's library is loaded, dlopen would give it again for that file name: the
+  // small tape gets no library rather than the wrong one.
+  EXPECT_THROW((void)NativeLibrary::build({{"f", &small}}, options), NativeCodeError);
+  // once it is unloaded, the small tape refuses the big one's library in turn
+  const std::string path = second->path();
+  second.reset();
+  const auto third = NativeLibrary::build({{"f", &small}}, options);
+  EXPECT_EQ(third->path(), path);
+  EXPECT_TRUE(contains(third->notes(), "refused (its key is")) << third->notes();
+  expect_tape_results(small, third->function("f"));
+}
+
+// A library that carries the right key but another signature (a forgery, or a bug in the key) is
+// refused: its function, which would trap, is never called.
+TEST(NativeCode, ALibraryWithAnotherSignatureIsNeverCalled) {
+  const NativeOptions options = in_temporary_cache("forged");
+  const Tape tape = every_operation();
+  std::string path, key;
+  {
+    const auto genuine = NativeLibrary::build({{"f", &tape}}, options);
+    path = genuine->path();
+    key = std::filesystem::path(path).stem().string();
+  }
+  const std::string source = options.cache_directory + "/forged.cpp";
+  std::ofstream(source) << "extern \"C\" const char unidyn_library_key[] = \"" << key << "\";\n"
+                        << "extern \"C\" const char unidyn_library_source[] = \"\";\n"
+                        << "extern \"C\" const char unidyn_library_signature[] = \"f 3 2\\n\";\n"
+                        << "extern \"C\" void f(const double*, double*) { __builtin_trap(); }\n";
+  const std::string command = "c++ -shared -fPIC -o '" + path + ".new' '" + source + "' && mv '" +
+                              path + ".new' '" + path + "'";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  // its checksum made to match, so that only the library's own word can refuse it
+  std::FILE* library = std::fopen(path.c_str(), "rb");
+  ASSERT_NE(library, nullptr);
+  const FileDigest digest = sha256_of_descriptor(fileno(library));
+  std::fclose(library);
+  std::ofstream(options.cache_directory + "/" + key + ".sum", std::ios::trunc)
+      << "sha256 " << digest.sha256 << " size " << digest.size << "\n";
+  const auto rebuilt = NativeLibrary::build({{"f", &tape}}, options);
+  EXPECT_FALSE(rebuilt->cached());
+  EXPECT_TRUE(contains(rebuilt->notes(), "its signature differs")) << rebuilt->notes();
+  expect_tape_results(tape, rebuilt->function("f"));
+}
+
+// A library cut short (a crash while copying, a full disk) does not match its checksum: it is
+// never handed to dlopen (which would die of SIGBUS), but removed and compiled again.
+TEST(NativeCode, ADamagedLibraryIsRebuiltNotLoaded) {
+  const NativeOptions options = in_temporary_cache("damaged");
+  const Tape tape = every_operation();
+  std::string path;
+  {
+    const auto first = NativeLibrary::build({{"f", &tape}}, options);
+    path = first->path();
+  }
+  std::filesystem::resize_file(path, std::filesystem::file_size(path) / 2);
+  const auto second = NativeLibrary::build({{"f", &tape}}, options);
+  EXPECT_FALSE(second->cached());
+  EXPECT_TRUE(contains(second->notes(), "refused")) << second->notes();
+  expect_tape_results(tape, second->function("f"));
+  // a checksum file removed: the library alone is not trusted either
+  std::filesystem::remove(std::filesystem::path(path).replace_extension(".sum"));
+  const auto third = NativeLibrary::build({{"f", &tape}}, options);
+  EXPECT_TRUE(contains(third->notes(), "checksum is missing")) << third->notes();
+  const auto fourth = NativeLibrary::build({{"f", &tape}}, options);
+  EXPECT_TRUE(fourth->cached());
+  EXPECT_EQ(fourth->notes(), "");
+}
+
+// An entry that is a symbolic link (to a library elsewhere) is not followed: it is removed (the
+// link, not its target) and the library compiled in its place.
+TEST(NativeCode, ASymbolicLinkInTheCacheIsNotFollowed) {
+  const NativeOptions options = in_temporary_cache("symlink");
+  const Tape tape = every_operation();
+  std::string path;
+  {
+    const auto first = NativeLibrary::build({{"f", &tape}}, options);
+    path = first->path();
+  }
+  const std::string elsewhere = options.cache_directory + "/elsewhere.so";
+  std::filesystem::rename(path, elsewhere);
+  std::filesystem::create_symlink(elsewhere, path);
+  const auto second = NativeLibrary::build({{"f", &tape}}, options);
+  EXPECT_FALSE(second->cached());
+  EXPECT_TRUE(contains(second->notes(), "refused")) << second->notes();
+  EXPECT_FALSE(std::filesystem::is_symlink(path));
+  EXPECT_TRUE(std::filesystem::exists(elsewhere));
+  expect_tape_results(tape, second->function("f"));
+}
+
+// Concurrent builds of one new library: one compiles it, the others wait and load it.
+TEST(NativeCode, ConcurrentBuildsCompileOnce) {
+  const NativeOptions options = in_temporary_cache("concurrent");
+  const Tape tape = every_operation();
+  std::vector<std::shared_ptr<const NativeLibrary>> libraries(3);
+  std::vector<std::thread> threads;
+  for (auto& library : libraries) {
+    threads.emplace_back([&] { library = NativeLibrary::build({{"f", &tape}}, options); });
+  }
+  for (auto& thread : threads) thread.join();
+  int compiled = 0;
+  for (const auto& library : libraries) {
+    ASSERT_TRUE(library);
+    compiled += library->cached() ? 0 : 1;
+    expect_tape_results(tape, library->function("f"));
+  }
+  EXPECT_EQ(compiled, 1);
+}
+
+// Whatever the umask, the cache directory (and those created above it) is 0700 and its files 0600.
+TEST(NativeCode, PrivateUnderAPermissiveUmask) {
+  NativeOptions options = in_temporary_cache("umask");
+  options.cache_directory += "/a/b";
+  const Tape tape = small_tape();
+  const mode_t previous = ::umask(0);
+  const auto library = NativeLibrary::build({{"f", &tape}}, options);
+  ::umask(previous);
+  const auto mode = [](const std::filesystem::path& p) {
+    struct stat s {};
+    EXPECT_EQ(::stat(p.c_str(), &s), 0) << p;
+    return s.st_mode & 07777;
+  };
+  EXPECT_EQ(mode(options.cache_directory), 0700u);
+  EXPECT_EQ(mode(std::filesystem::path(options.cache_directory).parent_path()), 0700u);
+  for (const auto& entry : std::filesystem::directory_iterator(options.cache_directory)) {
+    EXPECT_EQ(mode(entry.path()), 0600u) << entry.path();
   }
 }
 
