@@ -2,12 +2,16 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 
 #include "model_commands.hpp"
 #include "rotation_command.hpp"
 #include "unidyn/rotation/errors.hpp"
 #include "unidyn/symbolic/expression.hpp"
+#include "unidyn/symbolic/printable_text.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"unidyn: engineering dynamics after O'Reilly, Intermediate Dynamics for Engineers"};
@@ -24,26 +28,32 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "unidyn: error: {}\n", e.what());
+    fmt::print(stderr, "unidyn: error: {}\n", unidyn::printable(e.what()));
     return 2;
   }
 
   try {
-    if (rotation.rotation->parsed()) return unidyn::cli::run_rotation_command(rotation);
-    const int status = unidyn::cli::run_model_commands(models);
-    return status < 0 ? 2 : status;
+    int status = rotation.rotation->parsed() ? unidyn::cli::run_rotation_command(rotation)
+                                             : unidyn::cli::run_model_commands(models);
+    if (status < 0) status = 2;
+    // what could not be written to standard output (a full disk, /dev/full) is a failure
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+      fmt::print(stderr, "unidyn: error: cannot write standard output: {}\n", std::strerror(errno));
+      return 1;
+    }
+    return status;
   } catch (const unidyn::ModelError& e) {
-    fmt::print(stderr, "{}\n", e.what());
+    fmt::print(stderr, "{}\n", e.what());  // escaped when it was made
     return 2;
   } catch (const unidyn::SingularConfiguration& e) {
     // a parametrisation asked for where it does not exist (the Rodrigues vector at angle π)
-    fmt::print(stderr, "unidyn: error: {}\n", e.what());
+    fmt::print(stderr, "unidyn: error: {}\n", unidyn::printable(e.what()));
     return 2;
   } catch (const std::invalid_argument& e) {
-    fmt::print(stderr, "unidyn: error: {}\n", e.what());
+    fmt::print(stderr, "unidyn: error: {}\n", unidyn::printable(e.what()));
     return 2;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "unidyn: error: {}\n", e.what());
+    fmt::print(stderr, "unidyn: error: {}\n", unidyn::printable(e.what()));
     return 1;
   }
 }

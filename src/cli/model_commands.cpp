@@ -23,6 +23,7 @@
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/kinematics/integrability.hpp"
 #include "unidyn/numeric/compiled_system.hpp"
+#include "unidyn/symbolic/printable_text.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
 #ifndef UNIDYN_MODELS_DIR
@@ -234,13 +235,20 @@ int run_simulate(const ModelCommands& c) {
                                        [&](const std::vector<double>& row) { csv->row(row); });
   const double run_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
+  std::string close_error;
+  try {
+    csv->close();
+  } catch (const CsvWriteError& e) {
+    close_error = e.what();
+  }
 
   // The summary goes to standard error when the CSV takes standard output.
   std::FILE* out = path == "-" ? stderr : stdout;
   fmt::print(out, "{}: {} from t = 0 to {} ({}), {} rows{}\n", system.name,
              s.ok ? (s.stopped ? "simulated until stop_when" : "simulated") : "FAILED",
-             options.t_end, options.method, s.rows, path == "-" ? "" : " written to " + path);
-  if (!s.ok) fmt::print(out, "  stopped at t = {:.10g}: {}\n", s.failure_time, s.message);
+             options.t_end, options.method, s.rows, path == "-" ? "" : " written to " + printable(path));
+  if (!s.ok) fmt::print(out, "  stopped at t = {:.10g}: {}\n", s.failure_time, printable(s.message));
+  if (!close_error.empty()) fmt::print(out, "  FAILED at the end: {}\n", printable(close_error));
   fmt::print(out,
              "  derive + compile {:.3f} s, integrate {:.3f} s; {} steps ({} rejected), {} "
              "right-hand sides\n",
@@ -274,8 +282,8 @@ int run_simulate(const ModelCommands& c) {
     fmt::print(out, "\n");
   }
   if (!s.phases.empty()) fmt::print(out, "  phases and events:\n");
-  for (const auto& phase : s.phases) fmt::print(out, "    t = {:.12g}: {}\n", phase.t, phase.what);
-  return s.ok ? 0 : 1;
+  for (const auto& phase : s.phases) fmt::print(out, "    t = {:.12g}: {}\n", phase.t, printable(phase.what));
+  return s.ok && close_error.empty() ? 0 : 1;
 }
 
 int run_models(const ModelCommands& c) {

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "unidyn/equations/kane.hpp"
 #include "unidyn/integrate/contacts.hpp"
@@ -19,6 +20,12 @@
 
 namespace unidyn {
 namespace {
+
+// The caller's row callback failed at time t (its exception's message).
+struct RowRefused : std::runtime_error {
+  RowRefused(double time, const std::string& why) : std::runtime_error(why), t(time) {}
+  double t;
+};
 
 bool has_energy_column(const System& system) {
   for (const auto& f : system.forces) {
@@ -287,8 +294,13 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
             std::max(summary.max_velocity_residual, std::abs(velocity_residual[K]));
       }
     }
+    // a row the caller cannot take (a full disk) ends the run there; the rows before it stay
+    try {
+      on_row(row);
+    } catch (const std::exception& e) {
+      throw RowRefused(t, e.what());
+    }
     ++summary.rows;
-    on_row(row);
   };
 
   // The phase of the unilateral constraints, in the solver and the projector.
@@ -397,6 +409,10 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     summary.message = result.message;
     summary.failure_time = result.t_failure;
     summary.stats = result.stats;
+  } catch (const RowRefused& e) {
+    summary.ok = false;
+    summary.message = e.what();
+    summary.failure_time = e.t;
   } catch (const std::exception& e) {
     // the initial state itself cannot be solved (or its output row failed)
     summary.ok = false;

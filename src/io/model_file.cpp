@@ -20,6 +20,7 @@
 #include "unidyn/model/joints.hpp"
 #include "unidyn/model/scope.hpp"
 #include "unidyn/symbolic/expression_parser.hpp"
+#include "unidyn/symbolic/printable_text.hpp"
 
 namespace unidyn {
 namespace {
@@ -239,6 +240,15 @@ class ModelReader {
     return parse_vector(s.text, scope, s.where);
   }
 
+  // A name of free text that reaches the terminal (and, for a CSV column, a spreadsheet).
+  std::string printable_name(const YAML::Node& node, const std::string& what, bool csv_column) {
+    const std::string name = scalar(node, what);
+    if (const std::string why = unprintable_name_reason(name, csv_column); !why.empty()) {
+      fail(node, what + " '" + name + "' " + why);
+    }
+    return name;
+  }
+
   // A name that must not clash with another or with a reserved word.
   std::string new_name(const YAML::Node& node, const System& system, const std::string& what) {
     const std::string name = scalar(node, what);
@@ -352,7 +362,7 @@ System ModelReader::read(const YAML::Node& root) {
 
   System system;
   system.source = file_;
-  system.name = root["name"] ? scalar(root["name"], "name") : file_;
+  system.name = root["name"] ? printable_name(root["name"], "the model's name", false) : file_;
   if (root["parameters"]) read_parameters(root["parameters"], system);
   if (!root["coordinates"]) throw ModelError(at(root), "missing 'coordinates:' (a list of names)");
   read_coordinates(root["coordinates"], system);
@@ -1088,7 +1098,7 @@ std::vector<Output> ModelReader::read_outputs(const YAML::Node& node, const Syst
   const OutputScope scope(system);
   std::vector<Output> outputs;
   for (const auto& item : node) {
-    const std::string name = scalar(item.first, "a name");
+    const std::string name = printable_name(item.first, "a name in " + what, true);
     // one CSV column each: not t, q, der(q), energy, lambda(c), nor another output's name
     if (!columns_.insert(name).second) {
       fail(item.first, "'" + name + "' is already the name of a CSV column");

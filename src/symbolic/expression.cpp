@@ -1,6 +1,8 @@
 // Symbolic vectors and model-file positions.
 #include "unidyn/symbolic/expression.hpp"
 
+#include "unidyn/symbolic/printable_text.hpp"
+
 namespace unidyn {
 
 VectorExpr operator+(const VectorExpr& a, const VectorExpr& b) {
@@ -62,8 +64,10 @@ std::string SourcePosition::str() const {
   return s;
 }
 
+// The message quotes what the user typed: control characters are escaped (one line, no terminal
+// escape sequences).
 ModelError::ModelError(SourcePosition where, const std::string& message)
-    : std::runtime_error(where.str() + ": " + message),
+    : std::runtime_error(printable(where.str() + ": " + message)),
       where_(std::move(where)),
       message_(message) {}
 
