@@ -23,6 +23,7 @@
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/kinematics/integrability.hpp"
 #include "unidyn/numeric/compiled_system.hpp"
+#include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
@@ -77,8 +78,7 @@ std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::st
   return overrides;
 }
 
-// The model named on the command line, read once, and the text it was read from; with --reduced,
-// its approach-II form (the notes on what was eliminated go to standard error).
+// The model named on the command line, read once, and the text it was read from.
 struct CommandModel {
   System system;
   std::string text;
@@ -87,13 +87,16 @@ CommandModel read_command_model(const ModelCommands& c) {
   const std::string path = resolve_model(c.model);
   std::string text = read_model_text(path);
   System system = parse_model(text, path);
-  if (!c.reduced) return {std::move(system), std::move(text)};
-  Reduction reduction = eliminate_constraints(system);
-  for (const auto& note : reduction.notes) fmt::print(stderr, "approach II: {}\n", note);
-  return {std::move(reduction.system), std::move(text)};
+  return {std::move(system), std::move(text)};
 }
-System command_model(const ModelCommands& c) {
-  return read_command_model(c).system;
+
+// With --reduced, the model's approach-II form (the notes on what was eliminated go to standard
+// error).
+System command_system(const ModelCommands& c, const System& loaded) {
+  if (!c.reduced) return loaded;
+  Reduction reduction = eliminate_constraints(loaded);
+  for (const auto& note : reduction.notes) fmt::print(stderr, "approach II: {}\n", note);
+  return std::move(reduction.system);
 }
 
 EquationFormat parse_format(const std::string& format) {
@@ -126,8 +129,8 @@ void write_integrability(const System& system, EquationFormat format) {
   }
 }
 
-int run_derive(const ModelCommands& c) {
-  const System system = command_model(c);
+int run_derive(const ModelCommands& c, const CommandModel& model) {
+  const System system = command_system(c, model.system);
   const EquationFormat format = parse_format(c.format);
   if (c.method == "lagrange" || c.method == "kane") {
     // M q̈ = f + Aᵀλ by Lagrange's equations, or through partial velocities (the same M and f)
@@ -147,8 +150,8 @@ int run_derive(const ModelCommands& c) {
   return 0;
 }
 
-int run_check(const ModelCommands& c) {
-  const System system = command_model(c);
+int run_check(const ModelCommands& c, const CommandModel& model) {
+  const System system = command_system(c, model.system);
   const EquationsOfMotion lagrange = lagrange_equations(system);
   const NewtonEquations newton = newton_equations(system);
   const EquivalenceReport report = check_equivalence(system, lagrange, newton);
@@ -206,9 +209,8 @@ SimulationOptions options_for(const System& system, const ModelCommands& c) {
   return o;
 }
 
-int run_simulate(const ModelCommands& c) {
-  const CommandModel model = read_command_model(c);
-  const System& system = model.system;
+int run_simulate(const ModelCommands& c, const CommandModel& model) {
+  const System system = command_system(c, model.system);
   const SimulationStart start = initial_state(system, parse_sets(c.sets));
   const SimulationOptions options = options_for(system, c);
   const auto clock_start = std::chrono::steady_clock::now();
@@ -246,8 +248,10 @@ int run_simulate(const ModelCommands& c) {
   std::FILE* out = path == "-" ? stderr : stdout;
   fmt::print(out, "{}: {} from t = 0 to {} ({}), {} rows{}\n", system.name,
              s.ok ? (s.stopped ? "simulated until stop_when" : "simulated") : "FAILED",
-             options.t_end, options.method, s.rows, path == "-" ? "" : " written to " + printable(path));
-  if (!s.ok) fmt::print(out, "  stopped at t = {:.10g}: {}\n", s.failure_time, printable(s.message));
+             options.t_end, options.method, s.rows,
+             path == "-" ? "" : " written to " + printable(path));
+  if (!s.ok)
+    fmt::print(out, "  stopped at t = {:.10g}: {}\n", s.failure_time, printable(s.message));
   if (!close_error.empty()) fmt::print(out, "  FAILED at the end: {}\n", printable(close_error));
   fmt::print(out,
              "  derive + compile {:.3f} s, integrate {:.3f} s; {} steps ({} rejected), {} "
@@ -282,7 +286,8 @@ int run_simulate(const ModelCommands& c) {
     fmt::print(out, "\n");
   }
   if (!s.phases.empty()) fmt::print(out, "  phases and events:\n");
-  for (const auto& phase : s.phases) fmt::print(out, "    t = {:.12g}: {}\n", phase.t, printable(phase.what));
+  for (const auto& phase : s.phases)
+    fmt::print(out, "    t = {:.12g}: {}\n", phase.t, printable(phase.what));
   return s.ok && close_error.empty() ? 0 : 1;
 }
 
@@ -361,11 +366,22 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
 }
 
 int run_model_commands(const ModelCommands& c) {
-  if (c.derive->parsed()) return run_derive(c);
-  if (c.simulate->parsed()) return run_simulate(c);
-  if (c.check->parsed()) return run_check(c);
   if (c.models->parsed()) return run_models(c);
-  return -1;
+  if (!c.derive->parsed() && !c.simulate->parsed() && !c.check->parsed()) return -1;
+  const CommandModel model = read_command_model(c);
+  try {
+    if (c.derive->parsed()) return run_derive(c, model);
+    if (c.simulate->parsed()) return run_simulate(c, model);
+    return run_check(c, model);
+  } catch (const ExpressionTooLarge& e) {
+    // an expansion of the derivation past its budget: point at the model's largest expression
+    const System& system = model.system;
+    if (system.largest_expression_terms <= 1) throw;
+    throw ModelError(
+        system.largest_expression,
+        std::string(e.what()) + "; the model's largest power of a sum is here (up to " +
+            fmt::format("{:.3g}", system.largest_expression_terms) + " terms expanded)");
+  }
 }
 
 }  // namespace unidyn::cli

@@ -2,6 +2,7 @@
 #include "unidyn/equations/reduction.hpp"
 
 #include <optional>
+#include "unidyn/symbolic/expansion_budget.hpp"
 
 namespace unidyn {
 namespace {
@@ -58,8 +59,9 @@ Reduction eliminate_constraints(const System& full) {
       if (!k) continue;
       // q^k = q^k − Ψ / (∂Ψ/∂q^k), its rate and acceleration by the total derivative
       const CoordinateSymbols coordinate = system.coordinates()[*k];
-      const Expr solution = GiNaC::normal(
-          coordinate.value - constraint.expression / constraint.expression.diff(coordinate.value));
+      const Expr solution = normal_within_budget(
+          coordinate.value - constraint.expression / constraint.expression.diff(coordinate.value),
+          "approach II");
       GiNaC::exmap map{{coordinate.value, solution}};
       const Expr rate = system.configuration.total_derivative(solution);
       map[coordinate.rate] = rate;

@@ -21,8 +21,8 @@ std::string csv_field(const std::string& text) {
 
 CsvWriter::CsvWriter(const std::string& path)
     : path_(path == "-" ? "standard output" : path), owned_(path != "-") {
-  fd_ = owned_ ? ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666)
-               : STDOUT_FILENO;
+  fd_ =
+      owned_ ? ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666) : STDOUT_FILENO;
   if (fd_ < 0) {
     throw std::runtime_error("cannot open '" + path + "' for writing: " + std::strerror(errno));
   }

@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 #include <string_view>
+#include <type_traits>
 
 #include "unidyn/equations/newton.hpp"
 #include "unidyn/kinematics/constraint_gradient.hpp"
@@ -19,6 +20,7 @@
 #include "unidyn/model/forces.hpp"
 #include "unidyn/model/joints.hpp"
 #include "unidyn/model/scope.hpp"
+#include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/expression_parser.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
 
@@ -208,7 +210,24 @@ class ModelReader {
 
   Expr scalar_expr(const YAML::Node& node, const Scope& scope, const std::string& what) const {
     const ScalarText s = scalar_text(node, what);
-    return parse_scalar(s.text, scope, s.where);
+    return within_budget(parse_scalar(s.text, scope, s.where), s.where);
+  }
+
+  // Notes the expression with the largest power of a sum (named when an expansion of the
+  // derivation exceeds its budget).
+  template <typename E>
+  const E& within_budget(const E& e, const SourcePosition& where) const {
+    double terms = 0;
+    if constexpr (std::is_same_v<E, VectorExpr>) {
+      for (int i = 0; i < 3; ++i) terms = std::max(terms, largest_power_terms(e[i]));
+    } else {
+      terms = largest_power_terms(e);
+    }
+    if (terms > largest_terms_) {
+      largest_terms_ = terms;
+      largest_at_ = where;
+    }
+    return e;
   }
 
   // Refuses an expression that depends on the rates der(q) (unless `rates` allows them), on the
@@ -237,7 +256,7 @@ class ModelReader {
               scalar_expr(node[2], scope, what)};
     }
     const ScalarText s = scalar_text(node, what);
-    return parse_vector(s.text, scope, s.where);
+    return within_budget(parse_vector(s.text, scope, s.where), s.where);
   }
 
   // A name of free text that reaches the terminal (and, for a CSV column, a spreadsheet).
@@ -291,6 +310,9 @@ class ModelReader {
   std::string_view source_;
   std::set<std::string> columns_;  // names of the CSV columns taken so far
   Expr shape_mass_;                // the mass of the body whose inertia is being read
+  // the expression read so far with the largest expansion, and where
+  mutable double largest_terms_ = 0;
+  mutable SourcePosition largest_at_;
 };
 
 // YAML puts tags, anchors, quotes or a block header before a scalar's value, and folds and
@@ -383,6 +405,8 @@ System ModelReader::read(const YAML::Node& root) {
   if (root["outputs"]) system.outputs = read_outputs(root["outputs"], system, "outputs");
   if (root["conserved"]) system.conserved = read_outputs(root["conserved"], system, "conserved");
   if (root["stop_when"]) read_stop_when(root["stop_when"], system);
+  system.largest_expression = largest_at_;
+  system.largest_expression_terms = largest_terms_;
   return system;
 }
 
@@ -467,7 +491,8 @@ GiNaC::matrix ModelReader::inertia(const YAML::Node& node, const System& system)
     }
     for (unsigned i = 0; i < 3; ++i) {
       for (unsigned k = 0; k < i; ++k) {
-        if (!(J(i, k) - J(k, i)).expand().is_zero()) fail(rows, "an inertia tensor is symmetric");
+        if (!expand_within_budget(J(i, k) - J(k, i), "an inertia tensor").is_zero())
+          fail(rows, "an inertia tensor is symmetric");
       }
     }
   } else if (node.IsMap() && node.size() == 1 &&
@@ -638,7 +663,9 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
       ForcePoint from = force_point(spec["from"], system, scope);
       ForcePoint to = force_point(spec["to"], system, scope);
       const VectorExpr d = to.position - from.position;
-      if (d[0].expand().is_zero() && d[1].expand().is_zero() && d[2].expand().is_zero()) {
+      if (expand_within_budget(d[0], "a force").is_zero() &&
+          expand_within_budget(d[1], "a force").is_zero() &&
+          expand_within_budget(d[2], "a force").is_zero()) {
         fail(spec, "a " + kind + " needs two different points: from: and to: are the same");
       }
       return {std::move(from), std::move(to)};
@@ -860,7 +887,7 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
       }
       // The second derivatives miss der(x)*der(y) and abs(der(x)); the form of the expanded
       // expression does not.
-      if (!linear_in_rates(c.expression.expand(), system)) {
+      if (!linear_in_rates(expand_within_budget(c.expression, "a velocity constraint"), system)) {
         fail(spec["velocity"],
              "a velocity constraint must be linear in the rates der(q), as A(q, t) der(q) + e(q, "
              "t)");

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn {
@@ -56,9 +57,10 @@ std::vector<std::vector<std::vector<Expr>>> christoffel_first_kind(const ExprMat
       for (std::size_t k = 0; k < n; ++k) {
         // [ij, k] = ½ (∂a_ik/∂q^j + ∂a_jk/∂q^i − ∂a_ij/∂q^k)
         symbol[i][j][k] =
-            GiNaC::normal((a(i, k).diff(as_symbol(q[j])) + a(j, k).diff(as_symbol(q[i])) -
-                           a(i, j).diff(as_symbol(q[k]))) /
-                          2);
+            normal_within_budget((a(i, k).diff(as_symbol(q[j])) + a(j, k).diff(as_symbol(q[i])) -
+                                  a(i, j).diff(as_symbol(q[k]))) /
+                                     2,
+                                 "the Christoffel symbols");
       }
     }
   }

@@ -1,13 +1,14 @@
 // The Frenet triad of a space curve.
 #include "unidyn/kinematics/frenet.hpp"
 
+#include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn {
 namespace {
 
 Expr simplified(const Expr& e) {
-  return GiNaC::normal(e.expand());
+  return GiNaC::normal(expand_within_budget(e, "the Frenet triad"));
 }
 
 VectorExpr simplified(const VectorExpr& v) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn {
@@ -90,7 +91,7 @@ std::vector<std::vector<Expr>> kernel(const std::vector<std::vector<Expr>>& W) {
     for (unsigned j = 0; j < r; ++j) {
       Expr sum = 0;
       for (unsigned a = 0; a < r; ++a) sum += adjugate(j, a) * W[a][f];
-      x[pivots[j]] = GiNaC::normal(-sum);
+      x[pivots[j]] = normal_within_budget(-sum, "the integrability test");
     }
     basis.push_back(std::move(x));
   }

@@ -29,10 +29,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <utility>
 
 #include "expression_lexer.hpp"
+#include "unidyn/symbolic/expansion_budget.hpp"
 
 namespace unidyn {
 
@@ -514,6 +516,17 @@ Operand Parser::raise(const Operand& base, const Operand& exponent, const Token&
   }
   check_bits(bits, op.where);
   Expr result = guarded(op.where, "'^'", [&] { return GiNaC::pow(b, e); });
+  // A power of a sum is where a few characters become millions of terms once expanded.
+  if (GiNaC::is_a<GiNaC::power>(result) && GiNaC::is_a<GiNaC::add>(result.op(0))) {
+    if (const double terms = expanded_terms_bound(result); terms > kMaxModelExpressionTerms) {
+      char count[64];
+      std::snprintf(count, sizeof count, "%.3g", terms);
+      fail(op.where, std::string("this power of a sum would expand to up to ") + count +
+                         " terms (more than " +
+                         std::to_string(static_cast<long>(kMaxModelExpressionTerms)) +
+                         "): write it with fewer terms or a smaller exponent");
+    }
+  }
   return {Value::of(result), base.where, base.size + exponent.size + 1, bits};
 }
 

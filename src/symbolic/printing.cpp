@@ -1,6 +1,8 @@
 // Simplification for display and printing.
 #include "unidyn/symbolic/printing.hpp"
 
+#include "unidyn/symbolic/expansion_budget.hpp"
+
 #include <map>
 #include <set>
 #include <sstream>
@@ -25,8 +27,9 @@ Expr reduce_modulo_unit_circle(const Expr& p, const GiNaC::symbol& v, const GiNa
   Expr result = p;
   for (int k = p.degree(v); k >= 2; --k) {
     const Expr a = result.coeff(v, k);
-    result = (result - a * GiNaC::pow(v, k) + a * GiNaC::pow(v, k - 2) * (1 - GiNaC::pow(w, 2)))
-                 .expand();
+    result = expand_within_budget(
+        result - a * GiNaC::pow(v, k) + a * GiNaC::pow(v, k - 2) * (1 - GiNaC::pow(w, 2)),
+        "simplifying");
   }
   return result;
 }
@@ -44,9 +47,9 @@ Expr canonical_trig_form(const Expr& p) {
     back[sc.back().first] = GiNaC::sin(x);
     back[sc.back().second] = GiNaC::cos(x);
   }
-  Expr reduced = p.subs(to_symbols).expand();
+  Expr reduced = expand_within_budget(p.subs(to_symbols), "simplifying");
   for (const auto& [sine, cosine] : sc) reduced = reduce_modulo_unit_circle(reduced, sine, cosine);
-  return reduced.subs(back).expand();
+  return expand_within_budget(reduced.subs(back), "simplifying");
 }
 
 // Replaces each radical b^(p/q) by r^p with one symbol r = b^(1/q) per base in its canonical form
@@ -97,7 +100,8 @@ std::size_t expression_size(const Expr& e) {
 
 Expr simplify(const Expr& e) {
   SimplifyInside inside;
-  Expr best = inside(e).expand();
+  check_expansion_budget(e, "simplifying");
+  Expr best = expand_within_budget(inside(e), "simplifying");
   // A rational function is brought to one fraction only when that is smaller.
   if (const Expr normal = GiNaC::normal(best); expression_size(normal) < expression_size(best)) {
     best = normal;
@@ -121,7 +125,8 @@ Expr simplify(const Expr& e) {
     back[c.back()] = GiNaC::cos(x);
   }
   const Expr fraction = GiNaC::numer_denom(GiNaC::normal(best.subs(to_symbols)));
-  const Expr numerator = fraction.op(0).expand(), denominator = fraction.op(1).expand();
+  const Expr numerator = expand_within_budget(fraction.op(0), "simplifying"),
+             denominator = expand_within_budget(fraction.op(1), "simplifying");
   const std::size_t n = arguments.size();
   const std::size_t combinations = n <= 4 ? (std::size_t{1} << n) : 2;
   for (std::size_t mask = 0; mask < combinations; ++mask) {
@@ -134,7 +139,7 @@ Expr simplify(const Expr& e) {
       den = reduce_modulo_unit_circle(den, v, w);
     }
     const Expr reduced = GiNaC::normal(num / den).subs(back);
-    for (const Expr& candidate : {reduced, reduced.expand()}) {
+    for (const Expr& candidate : {reduced, expand_within_budget(reduced, "simplifying")}) {
       if (expression_size(candidate) < expression_size(best)) best = candidate;
     }
   }

@@ -41,7 +41,7 @@ class CsvWriter {
   std::string path_;
   int fd_ = -1;
   bool owned_ = false;
-  bool regular_ = false;  // a regular file: it can be cut back after a failed write
+  bool regular_ = false;    // a regular file: it can be cut back after a failed write
   long long complete_ = 0;  // the file's size after the last complete line
 };
 

@@ -166,6 +166,10 @@ struct System {
   std::vector<Output> conserved;
   // The run stops when one of these, non-zero at the start, reaches 0.
   std::vector<Output> stop_when;
+  // The model's expression with the largest power of a sum once expanded (largest_power_terms),
+  // and where it is: named when an expansion of the derivation exceeds its budget.
+  SourcePosition largest_expression;
+  double largest_expression_terms = 0;
 
   const std::vector<CoordinateSymbols>& coordinates() const { return configuration.coordinates(); }
   const GiNaC::realsymbol& time() const { return configuration.time(); }

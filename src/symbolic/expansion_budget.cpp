@@ -1,0 +1,145 @@
+// Bounding the size of an expansion before it is made.
+#include "unidyn/symbolic/expansion_budget.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <unordered_map>
+
+namespace unidyn {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Terms of the expansion of each node, memoised by node (GiNaC shares equal subexpressions, so
+// a tree can be far larger than the nodes it is made of); `largest` collects the bound of every
+// expansion inside (a function's arguments are expanded too).
+class Bound {
+ public:
+  double operator()(const Expr& e) {
+    const auto* node = &GiNaC::ex_to<GiNaC::basic>(e);
+    if (const auto it = memo_.find(node); it != memo_.end()) return it->second.second;
+    double terms = 1;
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+      terms = 0;
+      for (const auto& term : e) terms += (*this)(term);
+    } else if (GiNaC::is_a<GiNaC::mul>(e)) {
+      for (const auto& factor : e) terms *= (*this)(factor);
+    } else if (GiNaC::is_a<GiNaC::power>(e)) {
+      const double k = (*this)(e.op(0));
+      const Expr exponent = e.op(1);
+      if (exponent.info(GiNaC::info_flags::posint) && k > 1) {
+        // the monomials of degree n in k terms: C(n + k − 1, k − 1)
+        const double n = GiNaC::ex_to<GiNaC::numeric>(exponent).to_double();
+        terms = std::exp(std::lgamma(n + k) - std::lgamma(n + 1) - std::lgamma(k));
+        largest_power = std::max(largest_power, std::isfinite(terms) ? terms : kInfinity);
+      } else {
+        (*this)(exponent);
+      }
+    } else {
+      for (std::size_t i = 0; i < e.nops(); ++i) (*this)(e.op(i));  // a function's arguments
+    }
+    if (!std::isfinite(terms)) terms = kInfinity;
+    largest = std::max(largest, terms);
+    memo_.emplace(node, std::make_pair(e, terms));
+    return terms;
+  }
+
+  double largest = 1;
+  double largest_power = 1;
+
+ private:
+  // keyed by node, holding the node: the operands of a sum or product can be made on the fly
+  // (c·x from a pair), and a freed node's address could come back for another
+  std::unordered_map<const GiNaC::basic*, std::pair<Expr, double>> memo_;
+};
+
+}  // namespace
+
+double expanded_terms_bound(const Expr& e) {
+  Bound bound;
+  bound(e);
+  return bound.largest;
+}
+
+double largest_power_terms(const Expr& e) {
+  Bound bound;
+  bound(e);
+  return bound.largest_power;
+}
+
+// The expansion made one product at a time, each checked before it is made: the terms of a
+// product of two expanded sums (before like terms combine) are the product of their counts, and
+// a power of a sum of k terms has C(n + k − 1, k − 1). Used when the structural bound is over the
+// budget; that bound is loose where like terms combine, as they do in mechanics (a product of
+// sums of the same sines and cosines), so the expansion itself decides.
+class CheckedExpansion {
+ public:
+  explicit CheckedExpansion(std::string_view what) : what_(what) {}
+
+  Expr operator()(const Expr& e) {
+    const auto* node = &GiNaC::ex_to<GiNaC::basic>(e);
+    if (const auto it = memo_.find(node); it != memo_.end()) return it->second.second;
+    Expr result;
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+      GiNaC::exvector terms;
+      for (const auto& term : e) terms.push_back((*this)(term));
+      result = GiNaC::add(terms);
+      check(terms_of(result));
+    } else if (GiNaC::is_a<GiNaC::mul>(e)) {
+      result = 1;
+      for (const auto& factor : e) result = multiply(result, (*this)(factor));
+    } else if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::posint)) {
+      const Expr base = (*this)(e.op(0));
+      const double k = terms_of(base);
+      const double n = GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_double();
+      if (k > 1) check(std::exp(std::lgamma(n + k) - std::lgamma(n + 1) - std::lgamma(k)));
+      result = GiNaC::pow(base, e.op(1)).expand();
+    } else if (GiNaC::is_a<GiNaC::power>(e)) {
+      result = GiNaC::pow((*this)(e.op(0)), e.op(1)).expand();
+    } else {
+      result = e.expand();  // symbols, numbers, functions (whose arguments expand() leaves alone)
+    }
+    memo_.emplace(node, std::make_pair(e, result));
+    return result;
+  }
+
+ private:
+  static double terms_of(const Expr& e) {
+    return GiNaC::is_a<GiNaC::add>(e) ? static_cast<double>(e.nops()) : 1.0;
+  }
+
+  Expr multiply(const Expr& a, const Expr& b) {
+    check(terms_of(a) * terms_of(b));
+    return (a * b).expand();
+  }
+
+  void check(double terms) const {
+    if (!(terms > kMaxExpandedTerms)) return;
+    char count[64];
+    std::snprintf(count, sizeof count, "%.3g", terms);
+    throw ExpressionTooLarge(
+        std::string(what_) + ": an expansion would make " + count + " terms, past the budget of " +
+        std::to_string(static_cast<long>(kMaxExpandedTerms)) + " (a power of a long sum?)");
+  }
+
+  std::string_view what_;
+  std::unordered_map<const GiNaC::basic*, std::pair<Expr, Expr>> memo_;  // as Bound's
+};
+
+void check_expansion_budget(const Expr& e, std::string_view what) {
+  if (expanded_terms_bound(e) > kMaxExpandedTerms) CheckedExpansion{what}(e);
+}
+
+Expr expand_within_budget(const Expr& e, std::string_view what) {
+  // the structural bound is quick; when it allows, GiNaC's own expansion is safe
+  if (expanded_terms_bound(e) <= kMaxExpandedTerms) return e.expand();
+  return CheckedExpansion{what}(e);
+}
+
+Expr normal_within_budget(const Expr& e, std::string_view what) {
+  check_expansion_budget(e, what);
+  return GiNaC::normal(e);
+}
+
+}  // namespace unidyn
