@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "format.hpp"
+#include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {
 
@@ -23,9 +24,7 @@ Contacts::Contacts(const System& system, const CompiledSystem& compiled,
     const Constraint& c = system.constraints[k];
     if (!c.unilateral) continue;
     unilateral_.push_back(k);
-    const Expr e = GiNaC::evalf(c.restitution.subs(values));
-    const double r =
-        GiNaC::is_a<GiNaC::numeric>(e) ? GiNaC::ex_to<GiNaC::numeric>(e).to_double() : -1.0;
+    const double r = real_value(c.restitution, values).value_or(-1.0);
     if (!(r >= 0.0 && r <= 1.0)) {
       throw std::invalid_argument("the restitution of '" + c.name + "' must be in [0, 1]");
     }

@@ -17,6 +17,7 @@
 #include "unidyn/integrate/rattle.hpp"
 #include "unidyn/integrate/rk4.hpp"
 #include "unidyn/rotation/euler_angles.hpp"
+#include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {
 namespace {
@@ -35,14 +36,14 @@ bool has_energy_column(const System& system) {
 }
 
 double to_double(const Expr& e, const GiNaC::exmap& values) {
-  const Expr v = GiNaC::evalf(e.subs(values));
-  if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {
+  const std::optional<double> v = real_value(e, values);
+  if (!v) {
     std::ostringstream text;
     text << e;
     throw std::invalid_argument("cannot evaluate the initial value '" + text.str() +
                                 "' to a real number");
   }
-  return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+  return *v;
 }
 
 // Holds the state on the constraint manifolds: Newton steps Δq = −M⁻¹A_Ψᵀ (A_Ψ M⁻¹ A_Ψᵀ)⁻¹ Ψ on

@@ -23,6 +23,7 @@
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/expression_parser.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
+#include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {
 namespace {
@@ -1084,13 +1085,7 @@ void ModelReader::read_initial(const YAML::Node& node, System& system) {
     }
     const Expr value = scalar_expr(item.second, scope, "initial value");
     // a real number once the parameters have their values (no q, der(q), t, accelerations, λ)
-    bool real = false;
-    try {
-      const Expr v = GiNaC::evalf(value.subs(system.parameter_values()));
-      real = GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real();
-    } catch (const std::exception&) {
-      // such as log(0)
-    }
+    const bool real = real_value(value, system.parameter_values()).has_value();
     if (!real) {
       fail(item.second, "an initial value must be a real number, from numbers and parameters only");
     }

@@ -11,6 +11,12 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
+// The monomials of degree n in k terms, C(n + k − 1, k − 1): the terms of (a sum of k)^n.
+double multinomial_terms(double n, double k) {
+  const double terms = std::exp(std::lgamma(n + k) - std::lgamma(n + 1) - std::lgamma(k));
+  return terms < 1e15 ? std::round(terms) : terms;  // exact where a double counts exactly
+}
+
 // Terms of the expansion of each node, memoised by node (GiNaC shares equal subexpressions, so
 // a tree can be far larger than the nodes it is made of); `largest` collects the bound of every
 // expansion inside (a function's arguments are expanded too).
@@ -31,7 +37,7 @@ class Bound {
       if (exponent.info(GiNaC::info_flags::posint) && k > 1) {
         // the monomials of degree n in k terms: C(n + k − 1, k − 1)
         const double n = GiNaC::ex_to<GiNaC::numeric>(exponent).to_double();
-        terms = std::exp(std::lgamma(n + k) - std::lgamma(n + 1) - std::lgamma(k));
+        terms = multinomial_terms(n, k);
         largest_power = std::max(largest_power, std::isfinite(terms) ? terms : kInfinity);
       } else {
         (*this)(exponent);
@@ -93,7 +99,7 @@ class CheckedExpansion {
       const Expr base = (*this)(e.op(0));
       const double k = terms_of(base);
       const double n = GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_double();
-      if (k > 1) check(std::exp(std::lgamma(n + k) - std::lgamma(n + 1) - std::lgamma(k)));
+      if (k > 1) check(multinomial_terms(n, k));
       result = GiNaC::pow(base, e.op(1)).expand();
     } else if (GiNaC::is_a<GiNaC::power>(e)) {
       result = GiNaC::pow((*this)(e.op(0)), e.op(1)).expand();

@@ -43,13 +43,14 @@ inline void write_file(const std::string& path, const std::string& text) {
   out << text;
 }
 
-// Runs `unidyn ARGS` through the shell, standard output and standard error each to a file.
-inline Outcome run(const std::string& args) {
+// Runs `unidyn ARGS` through the shell, standard output and standard error each to a file;
+// `before` comes first on the command line (a pipe into unidyn, variables of its environment).
+inline Outcome run(const std::string& args, const std::string& before = "") {
   // the bundled models are those the command was built with
   unsetenv("UNIDYN_MODELS");
   const std::string out_path = temp_path("stdout.txt"), err_path = temp_path("stderr.txt");
-  const std::string command = std::string("'") + UNIDYN_EXECUTABLE + "' " + args + " >'" +
-                              out_path + "' 2>'" + err_path + "'";
+  const std::string command =
+      before + " '" + UNIDYN_EXECUTABLE + "' " + args + " >'" + out_path + "' 2>'" + err_path + "'";
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) {
     ADD_FAILURE() << "popen failed for " << command;

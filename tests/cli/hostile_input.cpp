@@ -1,0 +1,157 @@
+// Hostile and unlucky input, as a user (or another user) can give it: models piped through
+// /dev/stdin keyed by their own bytes, output that cannot be written, names with control
+// characters or formula prefixes, expressions that would expand without end, initial values that
+// divide by zero. Each ends in the documented exit status with the reason, never in wrong
+// results, a crash or lost data.
+#include <chrono>
+#include <string>
+
+#include "cli_support.hpp"
+
+namespace unidyn {
+namespace {
+
+using namespace cli_test;
+
+std::string model_text(const std::string& body) {
+  return "unidyn: 1\nparameters: {m: 1, g: 9.81}\ncoordinates: [x, y]\nparticles:\n"
+         "  P: {mass: m, position: [x, y, 0]}\n" +
+         body;
+}
+
+// A file in a fresh directory of its own (the cache directories need one).
+std::string fresh_directory(const std::string& name) {
+  const std::string path = temp_path(name);
+  std::filesystem::remove_all(path);
+  std::filesystem::create_directories(path);
+  return path;
+}
+
+// Two models piped one after the other through /dev/stdin, which can be read once: each is keyed
+// by the bytes that were parsed, so the second never runs the first one's compiled equations.
+TEST(HostileInput, PipedModelsAreKeyedByTheBytesParsed) {
+  const std::string cache = "UNIDYN_CACHE_DIR='" + fresh_directory("cache") + "'";
+  const std::string falling = temp_path("falling.yaml"), spring = temp_path("spring.yaml");
+  write_file(falling, model_text("forces:\n  - gravity: -g*E2\ninitial: {der(x): 1}\n"));
+  write_file(spring, model_text("forces:\n  - spring: {from: [0, 0, 0], to: P, stiffness: 4, "
+                                "rest_length: 0}\ninitial: {x: 1, der(y): 1}\n"));
+  for (const std::string& model : {falling, spring}) {
+    const std::string csv = temp_path("piped.csv"), reference = temp_path("reference.csv");
+    const Outcome piped =
+        run("simulate /dev/stdin --t-end 1 -o '" + csv + "'", "cat '" + model + "' | " + cache);
+    ASSERT_EQ(piped.status, 0) << piped.err;
+    EXPECT_TRUE(contains(piped.out, "native code (compiled")) << piped.out;
+    const Outcome tape =
+        run("simulate '" + model + "' --t-end 1 --evaluation tape -o '" + reference + "'", cache);
+    ASSERT_EQ(tape.status, 0) << tape.err;
+    EXPECT_EQ(read_file(csv), read_file(reference)) << model;
+  }
+}
+
+// Output that cannot be written is a failed run: exit 1 with the reason; a file cut by a size
+// limit ends with its last complete row, and the summary counts only those rows.
+TEST(HostileInput, UnwritableOutputFailsTheRun) {
+  const Outcome full = run("simulate spherical-pendulum -o /dev/full");
+  EXPECT_EQ(full.status, 1);
+  EXPECT_TRUE(contains(full.err, "No space left on device")) << full.err;
+  // equations to a full standard output
+  const std::string derive =
+      std::string("'") + UNIDYN_EXECUTABLE + "' derive spherical-pendulum >/dev/full 2>/dev/null";
+  const int status = std::system(derive.c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status;
+
+  const std::string csv = temp_path("limited.csv");
+  const Outcome limited =
+      run("simulate spherical-pendulum --t-end 100 -o '" + csv + "'", "trap '' XFSZ; ulimit -f 8;");
+  EXPECT_EQ(limited.status, 1) << limited.out << limited.err;
+  EXPECT_TRUE(contains(limited.out, "File too large")) << limited.out;
+  EXPECT_TRUE(contains(limited.out, "the file ends with the last complete row")) << limited.out;
+  const std::string text = read_file(csv);
+  ASSERT_FALSE(text.empty());
+  EXPECT_EQ(text.back(), '\n');
+  const Csv rows = parse_csv(text);  // every row complete
+  EXPECT_TRUE(contains(limited.out, std::to_string(rows.rows.size()) + " rows written"))
+      << limited.out;
+}
+
+// Names reach the terminal and the CSV header: control characters, bidirectional overrides and
+// spreadsheet formula prefixes are refused with the position; messages never echo them raw.
+TEST(HostileInput, NamesArePrintableText) {
+  const std::string bad_names[] = {
+      "outputs:\n  \"a\\nb\": x\n",          // a line break would split the header
+      "outputs:\n  \"=HYPERLINK(1)\": x\n",  // a formula in a spreadsheet
+      "outputs:\n  \"@SUM(A1)\": x\n",
+      "outputs:\n  \"x\\e[2J\": x\n",        // clears the screen
+      "conserved:\n  \"\\u202Eevil\": x\n",  // reverses what follows
+  };
+  for (const std::string& body : bad_names) {
+    const std::string path = temp_path("name.yaml");
+    write_file(path, model_text(body));
+    const Outcome r = run("simulate '" + path + "' --t-end 0.1");
+    expect_bad_input(r, body);
+    EXPECT_TRUE(contains(r.err, path + ":7:3:")) << r.err;
+    EXPECT_FALSE(contains(r.err, "\x1b")) << r.err;
+    EXPECT_FALSE(contains(r.err, "\xe2\x80\xae")) << r.err;
+  }
+  const std::string title = temp_path("title.yaml");
+  write_file(title, "name: \"Pendulum \\e[31m\"\n" + model_text(""));
+  expect_bad_input(run("check '" + title + "'"), "name");
+  // a misspelt key full of escapes is named, escaped
+  const std::string key = temp_path("key.yaml");
+  write_file(key, model_text("\"forc\\e]0;owned\\a\": []\n"));
+  const Outcome r = run("check '" + key + "'");
+  expect_bad_input(r, "key");
+  EXPECT_TRUE(contains(r.err, "unknown key 'forc\\e]0;owned\\x07'")) << r.err;
+  // a quoted name with a comma and quotes: one RFC 4180 field
+  const std::string quoted = temp_path("quoted.yaml");
+  write_file(quoted, model_text("outputs:\n  'x, \"doubled\"': 2*x\n"));
+  const Outcome ok = run("simulate '" + quoted + "' --t-end 0.1");
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  EXPECT_EQ(lines_of(ok.out).at(0), "t,x,y,der(x),der(y),energy,\"x, \"\"doubled\"\"\"");
+}
+
+// A forty-character power of a sum would expand to millions of terms: refused at its '^' at once
+// (exit 2), whatever the exponent; a smaller one whose derivation grows past the budget stops
+// with the budget's reason and the position of the model's largest power of a sum.
+TEST(HostileInput, ExpansionsStopWithinTheBudget) {
+  for (const int n : {20, 40, 200}) {
+    const std::string path = temp_path("power.yaml");
+    write_file(path, model_text("constraints:\n  - {name: c, velocity: \"(x+y+t+m+g+1)^" +
+                                std::to_string(n) + "*der(x)\"}\n"));
+    for (const std::string command : {"derive", "check", "simulate"}) {
+      const auto start = std::chrono::steady_clock::now();
+      const Outcome r = run(command + " '" + path + "'");
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      EXPECT_EQ(r.status, 2) << command << " " << n << ": " << r.err;
+      EXPECT_TRUE(contains(r.err, path + ":7:39: this power of a sum would expand")) << r.err;
+      EXPECT_LT(seconds, 10.0) << command << " " << n;
+    }
+  }
+  const std::string path = temp_path("position.yaml");
+  write_file(path,
+             "unidyn: 1\nparameters: {m: 1, g: 1}\ncoordinates: [x, y]\nparticles:\n"
+             "  P: {mass: m, position: [\"(x+y+m+g+1)^13\", y, 0]}\n");
+  const Outcome r = run("check '" + path + "'");
+  EXPECT_EQ(r.status, 2) << r.out << r.err;
+  EXPECT_TRUE(contains(r.err, path + ":5:28: simplifying: an expansion would make")) << r.err;
+  EXPECT_TRUE(contains(r.err, "the model's largest power of a sum is here")) << r.err;
+}
+
+// An initial value that divides by zero is refused (exit 2, position) — under LeakSanitizer too:
+// GiNaC's exception from inside its evaluation used to leak what it had built.
+TEST(HostileInput, InitialValueDividingByZero) {
+  const std::string path = temp_path("zero.yaml");
+  write_file(path,
+             "unidyn: 1\nparameters: {m: 0}\ncoordinates: [x]\nparticles:\n"
+             "  P: {mass: 1, position: [x, 0, 0]}\ninitial:\n  der(x): \"1/m\"\n");
+  const Outcome r = run("check '" + path + "'");
+  expect_bad_input(r, "1/m");
+  EXPECT_TRUE(contains(r.err, path + ":7:11:")) << r.err;
+  const Outcome set = run("simulate spherical-pendulum --set L=0 --t-end 0.1");
+  EXPECT_NE(set.status, 0);
+  EXPECT_NE(set.status, 23) << set.err;  // LeakSanitizer's exit status
+}
+
+}  // namespace
+}  // namespace unidyn
