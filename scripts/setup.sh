@@ -11,6 +11,8 @@ packages=(
   libcli11-dev libfmt-dev libssl-dev
   # tests and micro benchmarks
   googletest libgtest-dev libgmock-dev libbenchmark-dev
+  # fuzzing (scripts/fuzz.sh): clang with libFuzzer
+  clang libclang-rt-14-dev
   # side-by-side benchmark peers (bench/)
   libmujoco-dev libsimbody-dev python3 python3-sympy
 )

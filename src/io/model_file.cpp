@@ -549,6 +549,9 @@ TensorExpr ModelReader::rotation(const YAML::Node& node, const System& system) {
     expect_keys(node, {"axis", "angle"}, "an axis-angle rotation");
     if (!node["angle"]) fail(node, "an axis-angle rotation needs angle:");
     const VectorExpr axis = vector_expr(node["axis"], scope, "axis");
+    if (expand_within_budget(dot(axis, axis), "an axis").is_zero()) {
+      fail(node["axis"], "the axis of a rotation must not be the zero vector");
+    }
     Q = axis_angle_rotation_expr(axis / norm(axis), scalar_expr(node["angle"], scope, "angle"));
   } else if (node["quaternion"]) {
     expect_keys(node, {"quaternion"}, "a quaternion rotation");
