@@ -1,18 +1,26 @@
 #!/usr/bin/env bash
-# Configures and builds unidyn. Usage: scripts/build.sh [--sanitize]
-#   default      Release build in build/
+# Configures and builds unidyn. Usage: scripts/build.sh [--sanitize] [--only-cli]
+#   default      Release build in build/: the command, the tests and the benchmarks
 #   --sanitize   AddressSanitizer + UndefinedBehaviorSanitizer build in build-sanitize/ (-O1 -g:
 #                debuggable stacks, and long simulations in the tests stay fast enough)
+#   --only-cli   only the `unidyn` command and the libraries it needs (the main job)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 build_dir=build
 options=(-DCMAKE_BUILD_TYPE=Release)
-if [[ "${1:-}" == "--sanitize" ]]; then
-  build_dir=build-sanitize
-  options=(-DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g" -DUNIDYN_SANITIZE=ON
-           -DUNIDYN_BUILD_BENCH=OFF)
-fi
+targets=()
+for argument in "$@"; do
+  case "$argument" in
+    --sanitize)
+      build_dir=build-sanitize
+      options=(-DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g" -DUNIDYN_SANITIZE=ON
+               -DUNIDYN_BUILD_BENCH=OFF)
+      ;;
+    --only-cli) targets=(--target unidyn) ;;
+    *) echo "build.sh: unknown option $argument" >&2; exit 2 ;;
+  esac
+done
 
 cmake -S . -B "$build_dir" -G Ninja "${options[@]}" >/dev/null
-cmake --build "$build_dir" -j "$(nproc)"
+cmake --build "$build_dir" -j "$(nproc)" "${targets[@]}"

@@ -13,9 +13,18 @@
 #include "unidyn/symbolic/expression.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
 
+#ifndef UNIDYN_VERSION
+#define UNIDYN_VERSION "unknown"
+#endif
+
 int main(int argc, char** argv) {
   CLI::App app{"unidyn: engineering dynamics after O'Reilly, Intermediate Dynamics for Engineers"};
-  app.require_subcommand(1);
+  app.require_subcommand(0, 1);
+  app.set_version_flag("--version", "unidyn " UNIDYN_VERSION);
+  app.footer(
+      "MODEL is a model file or the name of a bundled model (`unidyn models` lists them). The "
+      "model\n"
+      "language is described in docs/model-format.md, the commands in the README.");
   unidyn::cli::RotationCommand rotation;
   unidyn::cli::add_rotation_command(app, rotation);
   unidyn::cli::ModelCommands models;
@@ -23,6 +32,8 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
@@ -30,6 +41,12 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     fmt::print(stderr, "unidyn: error: {}\n", unidyn::printable(e.what()));
     return 2;
+  }
+
+  // bare `unidyn`: how to use it
+  if (app.get_subcommands().empty()) {
+    fmt::print("{}", app.help());
+    return 0;
   }
 
   try {

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -53,13 +54,42 @@ std::vector<fs::path> bundled_models() {
   return found;
 }
 
-// A model argument: a file, or the name of a bundled model.
+// The edit distance between two names (insertions, deletions, substitutions).
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// A model argument: a file, or the name of a bundled model; neither is bad input, with the
+// bundled model of the nearest name when there is one close enough.
 std::string resolve_model(const std::string& argument) {
   if (fs::exists(argument)) return argument;
+  std::string nearest;
+  std::size_t best = argument.size() / 3 + 2;
   for (const auto& path : bundled_models()) {
     if (path.stem() == argument) return path.string();
+    if (const std::size_t d = edit_distance(argument, path.stem().string()); d < best) {
+      best = d;
+      nearest = path.stem().string();
+    }
   }
-  return argument;  // load_model reports that it cannot be opened
+  // a path (with a slash or an extension) that does not exist: load_model says it cannot open it
+  if (argument.find('/') != std::string::npos || fs::path(argument).has_extension()) {
+    return argument;
+  }
+  throw std::invalid_argument("'" + argument + "' is neither a model file nor a bundled model" +
+                              (nearest.empty() ? "" : "; did you mean '" + nearest + "'?") +
+                              " (`unidyn models` lists them)");
 }
 
 std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::string>& sets) {

@@ -1,0 +1,205 @@
+// The model file's parameters, coordinates, particles and bodies (inertia, rotation, Euler charts).
+#include "model_reader.hpp"
+
+namespace unidyn::model_reading {
+
+void ModelReader::read_parameters(const YAML::Node& node, System& system) {
+  expect_map(node, "parameters");
+  for (const auto& item : node) {
+    const std::string name = new_name(item.first, system, "parameter");
+    const double value = number(item.second, "parameter '" + name + "'");
+    system.parameters.push_back({name, GiNaC::realsymbol(name), value, at(item.first)});
+  }
+}
+
+void ModelReader::read_coordinates(const YAML::Node& node, System& system) {
+  if (!node.IsSequence() || node.size() == 0)
+    fail(node, "coordinates must be a list of names, e.g. [x, y]");
+  for (const auto& item : node) system.configuration.add(new_name(item, system, "coordinate"));
+}
+
+void ModelReader::read_particles(const YAML::Node& node, System& system) {
+  expect_map(node, "particles");
+  for (const auto& item : node) {
+    const std::string name = new_name(item.first, system, "particle");
+    const YAML::Node& spec = item.second;
+    expect_map(spec, "particle '" + name + "'");
+    expect_keys(spec, {"mass", "position"}, "particle '" + name + "'");
+    if (!spec["mass"] || !spec["position"])
+      fail(spec, "particle '" + name + "' needs mass: and position:");
+    const SystemScope scope(system);
+    const Expr mass = scalar_expr(spec["mass"], scope, "mass");
+    expect_state_only(spec["mass"], mass, system, "a mass");
+    const VectorExpr position = vector_expr(spec["position"], scope, "position");
+    expect_state_only(spec["position"], position, system, "a position");
+    system.particles.push_back({name, mass, position, at(item.first)});
+  }
+}
+
+void ModelReader::read_bodies(const YAML::Node& node, System& system) {
+  expect_map(node, "bodies");
+  for (const auto& item : node) {
+    const std::string name = new_name(item.first, system, "body");
+    const YAML::Node& spec = item.second;
+    expect_map(spec, "body '" + name + "'");
+    expect_keys(spec, {"mass", "inertia", "rotation", "center"}, "body '" + name + "'");
+    if (!spec["mass"] || !spec["inertia"] || !spec["rotation"] || !spec["center"]) {
+      fail(spec, "body '" + name + "' needs mass:, inertia:, rotation: and center:");
+    }
+    const SystemScope scope(system);
+    const Expr mass = scalar_expr(spec["mass"], scope, "mass");
+    expect_state_only(spec["mass"], mass, system, "a mass");
+    shape_mass_ = mass;
+    Body body{name,
+              mass,
+              inertia(spec["inertia"], system),
+              rotation(spec["rotation"], system),
+              VectorExpr{},
+              at(item.first),
+              euler_chart(spec["rotation"], system)};
+    add_unit_norm_constraint(spec["rotation"], name, system);
+    // the centre may use the body's own basis (l*top.e3): the body is known before it is read
+    system.bodies.push_back(body);
+    const SystemScope with_body(system);
+    const VectorExpr center = vector_expr(spec["center"], with_body, "center");
+    expect_state_only(spec["center"], center, system, "a centre of mass");
+    system.bodies.back().center = center;
+  }
+}
+
+// [A, B, C] principal moments along e1, e2, e3, or {tensor: [[..], [..], [..]]} (components on
+// e_i).
+GiNaC::matrix ModelReader::inertia(const YAML::Node& node, const System& system) {
+  const SystemScope scope(system);
+  GiNaC::matrix J(3, 3);
+  if (node.IsSequence()) {
+    if (node.size() != 3) fail(node, "inertia: [A, B, C] takes three principal moments");
+    for (unsigned i = 0; i < 3; ++i) J(i, i) = scalar_expr(node[i], scope, "a moment of inertia");
+  } else if (node.IsMap() && node["tensor"] && node.size() == 1) {
+    const YAML::Node& rows = node["tensor"];
+    if (!rows.IsSequence() || rows.size() != 3) fail(rows, "tensor: takes three rows of three");
+    for (unsigned i = 0; i < 3; ++i) {
+      if (!rows[i].IsSequence() || rows[i].size() != 3) fail(rows[i], "a row of three components");
+      for (unsigned k = 0; k < 3; ++k) J(i, k) = scalar_expr(rows[i][k], scope, "a component");
+    }
+    for (unsigned i = 0; i < 3; ++i) {
+      for (unsigned k = 0; k < i; ++k) {
+        if (!expand_within_budget(J(i, k) - J(k, i), "an inertia tensor").is_zero())
+          fail(rows, "an inertia tensor is symmetric");
+      }
+    }
+  } else if (node.IsMap() && node.size() == 1 &&
+             !shape_dimensions(node.begin()->first.Scalar()).empty()) {
+    // a uniform shape: {cylinder: {radius: R, height: h}}; its mass is filled in by read_bodies
+    const std::string shape = node.begin()->first.Scalar();
+    const YAML::Node dims = node.begin()->second;
+    const auto names = shape_dimensions(shape);
+    expect_map(dims, shape);
+    expect_keys(dims, std::set<std::string>(names.begin(), names.end()), shape);
+    std::vector<Expr> values;
+    for (const auto& n : names) {
+      if (!dims[n]) fail(dims, shape + " needs " + n + ":");
+      values.push_back(scalar_expr(dims[n], scope, n));
+    }
+    const auto moments = shape_principal_moments(shape, shape_mass_, values);
+    for (unsigned i = 0; i < 3; ++i) J(i, i) = moments[i];
+  } else {
+    fail(node,
+         "inertia must be [A, B, C], {tensor: [[..], [..], [..]]} or a shape: sphere, "
+         "hollow_sphere, cylinder, hollow_cylinder, disk, rod, box, ellipsoid, cone");
+  }
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned k = 0; k < 3; ++k) expect_state_only(node, J(i, k), system, "an inertia");
+  }
+  return J;
+}
+
+// {euler: I-J-K, angles: [..]}, {axis: [..], angle: ..}, {quaternion: [e0, e1, e2, e3]}, or a list
+// of these, multiplied left to right.
+TensorExpr ModelReader::rotation(const YAML::Node& node, const System& system) {
+  const SystemScope scope(system);
+  if (node.IsSequence()) {
+    if (node.size() == 0) fail(node, "an empty product of rotations");
+    TensorExpr Q = identity_tensor_expr();
+    for (const auto& factor : node) Q = Q.mul(rotation(factor, system));
+    return Q;
+  }
+  expect_map(node, "a rotation");
+  TensorExpr Q;
+  if (node["euler"]) {
+    expect_keys(node, {"euler", "angles"}, "an Euler-angle rotation");
+    const auto set = EulerSet::parse(scalar(node["euler"], "euler"));
+    if (!set) fail(node["euler"], "expected an Euler-angle set I-J-K such as 3-1-3 or 3-2-1");
+    const YAML::Node& angles = node["angles"];
+    if (!angles || !angles.IsSequence() || angles.size() != 3) {
+      fail(node, "an Euler-angle rotation needs angles: [a, b, c]");
+    }
+    Q = euler_rotation_expr(*set, scalar_expr(angles[0], scope, "an angle"),
+                            scalar_expr(angles[1], scope, "an angle"),
+                            scalar_expr(angles[2], scope, "an angle"));
+  } else if (node["axis"]) {
+    expect_keys(node, {"axis", "angle"}, "an axis-angle rotation");
+    if (!node["angle"]) fail(node, "an axis-angle rotation needs angle:");
+    const VectorExpr axis = vector_expr(node["axis"], scope, "axis");
+    if (expand_within_budget(dot(axis, axis), "an axis").is_zero()) {
+      fail(node["axis"], "the axis of a rotation must not be the zero vector");
+    }
+    Q = axis_angle_rotation_expr(axis / norm(axis), scalar_expr(node["angle"], scope, "angle"));
+  } else if (node["quaternion"]) {
+    expect_keys(node, {"quaternion"}, "a quaternion rotation");
+    const YAML::Node& e = node["quaternion"];
+    if (!e.IsSequence() || e.size() != 4) fail(e, "quaternion: takes [e0, e1, e2, e3]");
+    Q = euler_parameter_rotation_expr(
+        scalar_expr(e[0], scope, "e0"),
+        {scalar_expr(e[1], scope, "e1"), scalar_expr(e[2], scope, "e2"),
+         scalar_expr(e[3], scope, "e3")});
+  } else {
+    fail(node,
+         "a rotation is {euler: I-J-K, angles: [..]}, {axis: [..], angle: ..}, "
+         "{quaternion: [e0, e1, e2, e3]} or a list of these");
+  }
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned k = 0; k < 3; ++k) expect_state_only(node, Q(i, k), system, "a rotation");
+  }
+  return Q;
+}
+
+// The chart of {euler: I-J-K, angles: [a, b, c]} when a, b, c are coordinates.
+std::optional<EulerChart> ModelReader::euler_chart(const YAML::Node& node, const System& system) {
+  if (!node.IsMap() || !node["euler"] || !node["angles"] || !node["angles"].IsSequence()) return {};
+  EulerChart chart{*EulerSet::parse(node["euler"].Scalar()), {}};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto q = system.find_coordinate(node["angles"][i].Scalar());
+    if (!q) return {};
+    chart.coordinates[i] = *q;
+  }
+  return chart;
+}
+
+// {quaternion: [e0, e1, e2, e3]} of four coordinates: unidyn keeps e0² + e · e = 1 itself, as a
+// position constraint named <body>_unit (its multiplier does no work).
+void ModelReader::add_unit_norm_constraint(const YAML::Node& node, const std::string& body,
+                                           System& system) {
+  if (!node.IsMap() || !node["quaternion"]) return;
+  Expr norm_squared = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const auto q = system.find_coordinate(node["quaternion"][i].Scalar());
+    if (!q) return;  // the parameters are expressions: their norm is the model's business
+    norm_squared += GiNaC::pow(system.coordinates()[*q].value, 2);
+  }
+  const std::string name = body + "_unit";
+  system.constraints.push_back(
+      {name,
+       Constraint::Kind::position,
+       norm_squared - 1,
+       GiNaC::realsymbol("lambda(" + name + ")", "\\lambda_{\\mathrm{" + name + "}}"),
+       false,
+       std::nullopt,
+       at(node),
+       name,
+       {},
+       true,
+       0});
+}
+
+}  // namespace unidyn::model_reading

@@ -1,0 +1,224 @@
+// The model file's forces: gravity, springs, dampers, forces and moments, potentials, torsion
+// springs, gravity gradient, gravitation.
+#include "model_reader.hpp"
+
+namespace unidyn::model_reading {
+
+// A particle's name, {on: B, point: [X1, X2, X3]} (a material point of body B, components on its
+// basis from its centre), or a fixed vector. A point that moves must be one of the first two: a
+// force at a point of no mass would be seen by Lagrange's equations (through its potential) and
+// not by Euler's laws.
+ForcePoint ModelReader::force_point(const YAML::Node& node, const System& system,
+                                    const Scope& scope) {
+  if (node.IsScalar()) {
+    if (const auto p = system.find_particle(node.Scalar())) {
+      return {p, system.particles[*p].position, std::nullopt};
+    }
+  }
+  if (node.IsMap()) {
+    expect_keys(node, {"on", "point"}, "a body point");
+    if (!node["on"]) fail(node, "a body point is {on: B, point: [X1, X2, X3]}");
+    const auto b = system.find_body(scalar(node["on"], "on"));
+    if (!b) fail(node["on"], "on: must name a body");
+    const VectorExpr X = node["point"] ? vector_expr(node["point"], scope, "point") : VectorExpr{};
+    expect_state_only(node["point"] ? node["point"] : node, X, system, "a body point");
+    for (int i = 0; i < 3; ++i) {
+      for (const auto& q : system.coordinates()) {
+        if (X[i].has(q.value) || X[i].has(system.time())) {
+          fail(node["point"], "a point on a body is constant on its basis");
+        }
+      }
+    }
+    return {std::nullopt, system.material_point(*b, X), b};
+  }
+  const VectorExpr point = vector_expr(node, scope, "a point (a particle name or a vector)");
+  expect_state_only(node, point, system, "a point");
+  for (int i = 0; i < 3; ++i) {
+    for (const auto& q : system.coordinates()) {
+      if (point[i].has(q.value)) {
+        fail(node, "this point moves with " + q.name +
+                       " but is neither a particle nor on a body: use a particle's name or {on: B, "
+                       "point: [X1, X2, X3]}");
+      }
+    }
+  }
+  return {std::nullopt, point, std::nullopt};
+}
+
+void ModelReader::read_forces(const YAML::Node& node, System& system) {
+  if (!node.IsSequence()) fail(node, "forces must be a list, e.g. [{gravity: -g*E3}]");
+  for (const auto& entry : node) {
+    if (!entry.IsMap() || entry.size() != 1) {
+      fail(entry,
+           "each force is one of: gravity, spring, damper, force, moment, potential, gravitation, "
+           "gravity_gradient, torsion_spring");
+    }
+    const std::string kind = entry.begin()->first.Scalar();
+    const YAML::Node spec = entry.begin()->second;  // a copy: the iterator is a temporary
+    SystemScope scope(system);
+    // The two ends of a spring or a damper: not one point, where its direction would be 0/0.
+    const auto ends = [&]() -> std::pair<ForcePoint, ForcePoint> {
+      ForcePoint from = force_point(spec["from"], system, scope);
+      ForcePoint to = force_point(spec["to"], system, scope);
+      const VectorExpr d = to.position - from.position;
+      if (expand_within_budget(d[0], "a force").is_zero() &&
+          expand_within_budget(d[1], "a force").is_zero() &&
+          expand_within_budget(d[2], "a force").is_zero()) {
+        fail(spec, "a " + kind + " needs two different points: from: and to: are the same");
+      }
+      return {std::move(from), std::move(to)};
+    };
+    ForceElement element;
+    try {
+      if (kind == "gravity") {
+        const VectorExpr g = vector_expr(spec, scope, "gravity");
+        expect_state_only(spec, g, system, "gravity");
+        element = uniform_gravity(system, g);
+      } else if (kind == "spring") {
+        expect_map(spec, "spring");
+        expect_keys(spec, {"from", "to", "stiffness", "rest_length", "energy"}, "spring");
+        if (!spec["from"] || !spec["to"]) fail(spec, "a spring needs from: and to:");
+        if (!!spec["stiffness"] == !!spec["energy"]) {
+          fail(spec, "a spring needs either stiffness: K or energy: U(s) of its stretch s");
+        }
+        const GiNaC::realsymbol s("s");
+        Expr rest = 0;
+        if (spec["rest_length"]) {
+          rest = scalar_expr(spec["rest_length"], scope, "rest_length");
+          expect_state_only(spec["rest_length"], rest, system, "a rest length");
+        }
+        Expr energy;
+        if (spec["stiffness"]) {
+          const Expr K = scalar_expr(spec["stiffness"], scope, "stiffness");
+          expect_state_only(spec["stiffness"], K, system, "a stiffness");
+          energy = K * GiNaC::pow(s, 2) / 2;
+        } else {
+          SystemScope with_stretch(system);
+          with_stretch.define("s", Value::of(s));
+          energy = scalar_expr(spec["energy"], with_stretch, "energy");
+          expect_state_only(spec["energy"], energy, system, "a spring's energy");
+        }
+        const auto [from, to] = ends();
+        element = spring(from, to, rest, s, energy);
+      } else if (kind == "damper") {
+        expect_map(spec, "damper");
+        expect_keys(spec, {"from", "to", "coefficient"}, "damper");
+        if (!spec["from"] || !spec["to"] || !spec["coefficient"]) {
+          fail(spec, "a damper needs from:, to: and coefficient:");
+        }
+        const Expr c = scalar_expr(spec["coefficient"], scope, "coefficient");
+        expect_state_only(spec["coefficient"], c, system, "a damping coefficient", true);
+        const auto [from, to] = ends();
+        element = damper(system, from, to, c);
+      } else if (kind == "force") {
+        expect_map(spec, "force");
+        expect_keys(spec, {"at", "on", "point", "value"}, "force");
+        if (!spec["value"] || !!spec["at"] == !!spec["on"]) {
+          fail(spec,
+               "a force needs value: and either at: (a particle) or on: (a body, with point: "
+               "[X1, X2, X3] on its basis from its centre)");
+        }
+        const VectorExpr F = vector_expr(spec["value"], scope, "value");
+        expect_state_only(spec["value"], F, system, "a force", true);
+        if (spec["at"]) {
+          const auto p = system.find_particle(scalar(spec["at"], "at"));
+          if (!p) fail(spec["at"], "at: must name a particle");
+          element = applied_force(*p, F);
+        } else {
+          const auto b = system.find_body(scalar(spec["on"], "on"));
+          if (!b) fail(spec["on"], "on: must name a body");
+          const VectorExpr X =
+              spec["point"] ? vector_expr(spec["point"], scope, "point") : VectorExpr{};
+          element = body_force(*b, system.material_point(*b, X), F);
+        }
+      } else if (kind == "moment") {
+        expect_map(spec, "moment");
+        expect_keys(spec, {"on", "value"}, "moment");
+        if (!spec["on"] || !spec["value"]) fail(spec, "a moment needs on: (a body) and value:");
+        const auto b = system.find_body(scalar(spec["on"], "on"));
+        if (!b) fail(spec["on"], "on: must name a body");
+        const VectorExpr M = vector_expr(spec["value"], scope, "value");
+        expect_state_only(spec["value"], M, system, "a moment", true);
+        element = body_moment(*b, M);
+      } else if (kind == "gravity_gradient") {
+        expect_map(spec, "gravity_gradient");
+        expect_keys(spec, {"on", "GM", "center"}, "gravity_gradient");
+        if (!spec["on"] || !spec["GM"]) {
+          fail(spec,
+               "gravity_gradient needs on: (a body) and GM: (center: defaults to the origin)");
+        }
+        const auto b = system.find_body(scalar(spec["on"], "on"));
+        if (!b) fail(spec["on"], "on: must name a body");
+        const Expr GM = scalar_expr(spec["GM"], scope, "GM");
+        expect_state_only(spec["GM"], GM, system, "GM");
+        VectorExpr center;
+        if (spec["center"]) {
+          center = vector_expr(spec["center"], scope, "center");
+          expect_state_only(spec["center"], center, system, "the attracting centre");
+        }
+        element = gravity_gradient(system, *b, GM, center);
+      } else if (kind == "torsion_spring") {
+        expect_map(spec, "torsion_spring");
+        expect_keys(spec, {"on", "angle", "stiffness", "rest_angle"}, "torsion_spring");
+        if (!spec["on"] || !spec["angle"] || !spec["stiffness"]) {
+          fail(spec,
+               "a torsion_spring needs on: (a body), angle: (one of its Euler angles) and "
+               "stiffness:");
+        }
+        const auto b = system.find_body(scalar(spec["on"], "on"));
+        if (!b) fail(spec["on"], "on: must name a body");
+        const auto& chart = system.bodies[*b].chart;
+        if (!chart)
+          fail(spec["on"], "a torsion_spring needs a body turned by {euler: .., angles: [..]}");
+        const auto q = system.find_coordinate(scalar(spec["angle"], "angle"));
+        int angle = -1;
+        for (int i = 0; i < 3; ++i) {
+          if (q && chart->coordinates[static_cast<std::size_t>(i)] == *q) angle = i;
+        }
+        if (angle < 0) fail(spec["angle"], "angle: must be one of the body's Euler angles");
+        const Expr K = scalar_expr(spec["stiffness"], scope, "stiffness");
+        expect_state_only(spec["stiffness"], K, system, "a stiffness");
+        Expr rest = 0;
+        if (spec["rest_angle"]) {
+          rest = scalar_expr(spec["rest_angle"], scope, "rest_angle");
+          expect_state_only(spec["rest_angle"], rest, system, "a rest angle");
+        }
+        element = torsion_spring(system, *b, angle, K, rest);
+      } else if (kind == "potential") {
+        const Expr U = scalar_expr(spec, scope, "potential");
+        expect_state_only(spec, U, system, "a potential U(q, t)");
+        element = coordinate_potential(U);
+      } else if (kind == "gravitation") {
+        expect_map(spec, "gravitation");
+        expect_keys(spec, {"between", "G"}, "gravitation");
+        if (!spec["between"] || !spec["G"]) fail(spec, "gravitation needs between: [P, Q] and G:");
+        const YAML::Node& pair = spec["between"];
+        if (!pair.IsSequence() || pair.size() != 2) fail(pair, "between: must list two particles");
+        const auto p1 = system.find_particle(scalar(pair[0], "particle"));
+        const auto p2 = system.find_particle(scalar(pair[1], "particle"));
+        if (!p1) fail(pair[0], "not a particle");
+        if (!p2) fail(pair[1], "not a particle");
+        if (*p1 == *p2) fail(pair, "gravitation needs two different particles");
+        const Expr G = scalar_expr(spec["G"], scope, "G");
+        expect_state_only(spec["G"], G, system, "G");
+        element = gravitation(system, *p1, *p2, G);
+      } else {
+        fail(entry.begin()->first, "unknown force '" + kind +
+                                       "' (expected gravity, spring, damper, force, moment, "
+                                       "potential, gravitation, gravity_gradient or "
+                                       "torsion_spring)");
+      }
+    } catch (const ModelError&) {
+      throw;
+    } catch (const YAML::Exception&) {
+      throw;
+    } catch (const std::exception& e) {
+      // GiNaC refusing to build it, e.g. a division by zero for two particles at one fixed point
+      fail(entry, "this " + kind + " cannot be built: " + e.what());
+    }
+    element.where = at(entry);
+    system.forces.push_back(std::move(element));
+  }
+}
+
+}  // namespace unidyn::model_reading

@@ -1,0 +1,212 @@
+// The model-file reader, shared by the files that read its sections (model_file.cpp: the file and
+// its order; model_bodies.cpp: parameters, coordinates, particles, bodies; model_forces.cpp;
+// model_constraints.cpp; model_run.cpp: initial state, simulate, outputs, stop_when). Private to
+// the io layer.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <type_traits>
+
+#include "unidyn/equations/newton.hpp"
+#include "unidyn/kinematics/constraint_gradient.hpp"
+#include "unidyn/kinematics/inertia.hpp"
+#include "unidyn/model/forces.hpp"
+#include "unidyn/model/joints.hpp"
+#include "unidyn/model/scope.hpp"
+#include "unidyn/symbolic/expansion_budget.hpp"
+#include "unidyn/symbolic/expression_parser.hpp"
+#include "unidyn/symbolic/printable_text.hpp"
+#include "unidyn/symbolic/real_value.hpp"
+
+namespace unidyn::model_reading {
+
+// Reads one model file: the helpers every section uses (positions, keys, scalars, expressions,
+// names), and one member per section. Every mistake throws ModelError at its position.
+class ModelReader {
+ public:
+  ModelReader(std::string file, std::string_view source)
+      : file_(std::move(file)), source_(source) {}
+
+  System read(const YAML::Node& root);
+
+ private:
+  // Position of a node (of its tag, anchor or quote, if it has one).
+  SourcePosition at(const YAML::Node& node) const {
+    const YAML::Mark mark = node.Mark();
+    return {file_, mark.line + 1, mark.column + 1};
+  }
+
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& message) const {
+    throw ModelError(at(node), message);
+  }
+
+  void expect_map(const YAML::Node& node, const std::string& what) const {
+    if (!node.IsMap()) fail(node, what + " must be a mapping (key: value)");
+  }
+
+  // Keys outside `allowed` are mistakes (a misspelt key would otherwise be silently ignored).
+  void expect_keys(const YAML::Node& node, const std::set<std::string>& allowed,
+                   const std::string& what) const {
+    expect_unique_keys(node);
+    for (const auto& item : node) {
+      const std::string key = item.first.Scalar();
+      if (!allowed.count(key)) {
+        std::string list;
+        for (const auto& k : allowed) list += (list.empty() ? "" : ", ") + k;
+        throw ModelError(at(item.first), "unknown key '" + key + "' in " + what +
+                                             " (expected one of: " + list + ")");
+      }
+    }
+  }
+
+  // YAML keeps only one of two equal keys: the other would be silently lost.
+  void expect_unique_keys(const YAML::Node& node) const {
+    std::set<std::string> seen;
+    for (const auto& item : node) {
+      if (item.first.IsScalar() && !seen.insert(item.first.Scalar()).second) {
+        fail(item.first, "'" + item.first.Scalar() + "' is given twice");
+      }
+    }
+  }
+
+  std::string scalar(const YAML::Node& node, const std::string& what) const {
+    if (!node.IsScalar()) fail(node, what + " must be a single value");
+    return node.Scalar();
+  }
+
+  double number(const YAML::Node& node, const std::string& what) const {
+    const std::string text = scalar(node, what);
+    std::size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != text.size() || !std::isfinite(x)) fail(node, what + " must be a number");
+    return x;
+  }
+
+  // The text of a scalar as the expression parser should read it, and where it starts.
+  struct ScalarText {
+    std::string text;
+    SourcePosition where;
+  };
+  ScalarText scalar_text(const YAML::Node& node, const std::string& what) const;
+
+  Expr scalar_expr(const YAML::Node& node, const Scope& scope, const std::string& what) const {
+    const ScalarText s = scalar_text(node, what);
+    return within_budget(parse_scalar(s.text, scope, s.where), s.where);
+  }
+
+  // Notes the expression with the largest power of a sum (named when an expansion of the
+  // derivation exceeds its budget).
+  template <typename E>
+  const E& within_budget(const E& e, const SourcePosition& where) const {
+    double terms = 0;
+    if constexpr (std::is_same_v<E, VectorExpr>) {
+      for (int i = 0; i < 3; ++i) terms = std::max(terms, largest_power_terms(e[i]));
+    } else {
+      terms = largest_power_terms(e);
+    }
+    if (terms > largest_terms_) {
+      largest_terms_ = terms;
+      largest_at_ = where;
+    }
+    return e;
+  }
+
+  // Refuses an expression that depends on the rates der(q) (unless `rates` allows them), on the
+  // accelerations (P.acceleration) or on a multiplier c.lambda: only outputs may.
+  void expect_state_only(const YAML::Node& node, const Expr& e, const System& system,
+                         const std::string& what, bool rates = false) const {
+    for (const auto& q : system.coordinates()) {
+      if (!rates && e.has(q.rate)) fail(node, what + " cannot depend on der(" + q.name + ")");
+      if (e.has(q.acceleration)) fail(node, what + " cannot depend on accelerations");
+    }
+    for (const auto& c : system.constraints) {
+      if (e.has(c.multiplier)) fail(node, what + " cannot depend on " + c.name + ".lambda");
+    }
+  }
+  void expect_state_only(const YAML::Node& node, const VectorExpr& v, const System& system,
+                         const std::string& what, bool rates = false) const {
+    for (int i = 0; i < 3; ++i) expect_state_only(node, v[i], system, what, rates);
+  }
+
+  // A vector: a YAML list of three scalars, or one vector expression.
+  VectorExpr vector_expr(const YAML::Node& node, const Scope& scope,
+                         const std::string& what) const {
+    if (node.IsSequence()) {
+      if (node.size() != 3) fail(node, what + " must have three components [x, y, z]");
+      return {scalar_expr(node[0], scope, what), scalar_expr(node[1], scope, what),
+              scalar_expr(node[2], scope, what)};
+    }
+    const ScalarText s = scalar_text(node, what);
+    return within_budget(parse_vector(s.text, scope, s.where), s.where);
+  }
+
+  // A name of free text that reaches the terminal (and, for a CSV column, a spreadsheet).
+  std::string printable_name(const YAML::Node& node, const std::string& what, bool csv_column) {
+    const std::string name = scalar(node, what);
+    if (const std::string why = unprintable_name_reason(name, csv_column); !why.empty()) {
+      fail(node, what + " '" + name + "' " + why);
+    }
+    return name;
+  }
+
+  // A name that must not clash with another or with a reserved word.
+  std::string new_name(const YAML::Node& node, const System& system, const std::string& what) {
+    const std::string name = scalar(node, what);
+    static const std::set<std::string> reserved = {
+        "t",    "pi",   "E1",   "E2",    "E3",    "der",  "sin",   "cos", "tan",
+        "asin", "acos", "atan", "atan2", "sinh",  "cosh", "tanh",  "exp", "log",
+        "sqrt", "abs",  "sign", "dot",   "cross", "norm", "lambda"};
+    bool valid =
+        !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
+    for (char c : name) valid = valid && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+    if (!valid) fail(node, what + " '" + name + "' is not a valid name (letters, digits, _)");
+    if (reserved.count(name)) fail(node, what + " '" + name + "' is a reserved word");
+    if (system.find_parameter(name) || system.find_coordinate(name) || system.find_particle(name) ||
+        system.find_body(name)) {
+      fail(node, "'" + name + "' is already defined");
+    }
+    return name;
+  }
+
+  void read_parameters(const YAML::Node& node, System& system);
+  void read_coordinates(const YAML::Node& node, System& system);
+  void read_particles(const YAML::Node& node, System& system);
+  void read_bodies(const YAML::Node& node, System& system);
+  TensorExpr rotation(const YAML::Node& node, const System& system);
+  std::optional<EulerChart> euler_chart(const YAML::Node& node, const System& system);
+  void add_unit_norm_constraint(const YAML::Node& node, const std::string& body, System& system);
+  GiNaC::matrix inertia(const YAML::Node& node, const System& system);
+  void read_forces(const YAML::Node& node, System& system);
+  ForcePoint force_point(const YAML::Node& node, const System& system, const Scope& scope);
+  void read_constraints(const YAML::Node& node, System& system);
+  void read_joint(const YAML::Node& spec, const std::string& name, System& system);
+  void read_rolling(const YAML::Node& spec, const std::string& name, System& system);
+  void read_initial(const YAML::Node& node, System& system);
+  void read_simulate(const YAML::Node& node, System& system);
+  std::vector<Output> read_outputs(const YAML::Node& node, const System& system,
+                                   const std::string& what);
+  void read_stop_when(const YAML::Node& node, System& system);
+
+  std::string file_;
+  std::string_view source_;
+  std::set<std::string> columns_;  // names of the CSV columns taken so far
+  Expr shape_mass_;                // the mass of the body whose inertia is being read
+  // the expression read so far with the largest expansion, and where
+  mutable double largest_terms_ = 0;
+  mutable SourcePosition largest_at_;
+};
+
+}  // namespace unidyn::model_reading

@@ -1,0 +1,165 @@
+// The model file's initial state, simulate: settings, outputs, conserved quantities and stop_when.
+#include "model_reader.hpp"
+
+namespace unidyn::model_reading {
+
+namespace {
+
+// Outputs may also name constraint forces: P.constraint_force = m a − F and B.constraint_force =
+// m ā − F, B.constraint_moment = Ḣ − M (the resultants on a particle or body, §4.4, §8.6), and
+// c.force.N = Σ λ ∂Ψ/∂r_N or Σ λ f_N, c.moment.N = Σ λ h_N (8.22): the force (moment about the
+// centre of mass) of constraint c — or of all rows of joint c — on the particle or body N.
+class OutputScope : public SystemScope {
+ public:
+  explicit OutputScope(const System& system) : SystemScope(system), system_(system) {}
+
+  std::optional<Value> lookup(std::string_view name) const override {
+    if (auto value = SystemScope::lookup(name)) return value;
+    const std::string key(name);
+    const std::size_t dot = key.find('.');
+    if (dot == std::string::npos) return std::nullopt;
+    const std::string owner = key.substr(0, dot), member = key.substr(dot + 1);
+    if (const auto p = system_.find_particle(owner); p && member == "constraint_force") {
+      VectorExpr R = system_.particles[*p].mass * system_.acceleration(*p);
+      for (const auto& element : system_.forces) {
+        for (const auto& [particle, F] : element.forces) {
+          if (particle == *p) R = R - F;
+        }
+      }
+      return Value::of(R);
+    }
+    if (const auto b = system_.find_body(owner)) {
+      if (member != "constraint_force" && member != "constraint_moment") return std::nullopt;
+      const BodyBalance balance = newton_equations(system_).bodies[*b];
+      return Value::of(member == "constraint_force" ? balance.constraint_force()
+                                                    : balance.constraint_moment());
+    }
+    return constraint_load(owner, member);
+  }
+
+  std::vector<std::string> names() const override {
+    std::vector<std::string> all = SystemScope::names();
+    for (const auto& p : system_.particles) all.push_back(p.name + ".constraint_force");
+    for (const auto& b : system_.bodies) {
+      all.push_back(b.name + ".constraint_force");
+      all.push_back(b.name + ".constraint_moment");
+    }
+    std::set<std::string> joints;
+    for (const auto& c : system_.constraints) {
+      joints.insert(c.name);
+      joints.insert(c.joint);
+    }
+    for (const auto& j : joints) {
+      for (const auto& p : system_.particles) all.push_back(j + ".force." + p.name);
+      for (const auto& b : system_.bodies) {
+        all.push_back(j + ".force." + b.name);
+        all.push_back(j + ".moment." + b.name);
+      }
+    }
+    return all;
+  }
+
+ private:
+  // c.force.N or c.moment.N summed over the rows of c
+  std::optional<Value> constraint_load(const std::string& owner, const std::string& member) const {
+    const bool force = member.starts_with("force."), moment = member.starts_with("moment.");
+    if (!force && !moment) return std::nullopt;
+    const std::string target = member.substr(force ? 6 : 7);
+    const auto p = system_.find_particle(target);
+    const auto b = system_.find_body(target);
+    if (!b && (!p || moment)) return std::nullopt;
+    VectorExpr sum;
+    bool found = false;
+    for (std::size_t k = 0; k < system_.constraints.size(); ++k) {
+      const Constraint& c = system_.constraints[k];
+      if (c.name != owner && c.joint != owner) continue;
+      found = true;
+      const ConstraintLoads loads = constraint_loads(system_, k);
+      const VectorExpr& v =
+          p ? loads.particle_force[*p] : (force ? loads.body_force[*b] : loads.body_moment[*b]);
+      sum = sum + Expr(c.multiplier) * v;
+    }
+    if (!found) return std::nullopt;
+    return Value::of(sum);
+  }
+
+  const System& system_;
+};
+
+}  // namespace
+
+void ModelReader::read_initial(const YAML::Node& node, System& system) {
+  expect_map(node, "initial");
+  const SystemScope scope(system);
+  std::set<std::string> given;
+  for (const auto& item : node) {
+    std::string key = scalar(item.first, "an initial value's name");
+    bool is_rate = false;
+    if (key.starts_with("der(") && key.ends_with(")")) {
+      key = key.substr(4, key.size() - 5);
+      is_rate = true;
+    }
+    const auto q = system.find_coordinate(key);
+    if (!q) fail(item.first, "'" + key + "' is not a coordinate");
+    if (!given.insert(std::string(is_rate ? "der(" : "") + key).second) {
+      fail(item.first, "'" + item.first.Scalar() + "' is given twice");
+    }
+    const Expr value = scalar_expr(item.second, scope, "initial value");
+    // a real number once the parameters have their values (no q, der(q), t, accelerations, λ)
+    const bool real = real_value(value, system.parameter_values()).has_value();
+    if (!real) {
+      fail(item.second, "an initial value must be a real number, from numbers and parameters only");
+    }
+    (is_rate ? system.initial_rates : system.initial_values)[*q] = value;
+  }
+}
+
+void ModelReader::read_simulate(const YAML::Node& node, System& system) {
+  expect_map(node, "simulate");
+  expect_keys(node, {"t_end", "output_step", "method", "rtol", "atol", "step"}, "simulate");
+  SimulationSettings& s = system.simulate;
+  if (node["t_end"]) s.t_end = number(node["t_end"], "t_end");
+  if (node["output_step"]) s.output_step = number(node["output_step"], "output_step");
+  if (node["method"]) s.method = scalar(node["method"], "method");
+  if (node["rtol"]) s.rtol = number(node["rtol"], "rtol");
+  if (node["atol"]) s.atol = number(node["atol"], "atol");
+  if (node["step"]) s.step = number(node["step"], "step");
+  if (!(s.t_end > 0)) fail(node["t_end"], "t_end must be positive");
+  if (!(s.output_step > 0)) fail(node["output_step"], "output_step must be positive");
+  if (s.method != "dopri5" && s.method != "rk4" && s.method != "cvode" && s.method != "rattle")
+    fail(node["method"], "method must be dopri5, rk4, cvode or rattle");
+  // (the integrators would refuse these only once the run has started)
+  if (!(s.rtol > 0)) fail(node["rtol"], "rtol must be positive");
+  if (!(s.atol > 0)) fail(node["atol"], "atol must be positive");
+  if (s.step < 0) fail(node["step"], "step must not be negative (0: output_step / 10)");
+}
+
+std::vector<Output> ModelReader::read_outputs(const YAML::Node& node, const System& system,
+                                              const std::string& what) {
+  expect_map(node, what);
+  expect_unique_keys(node);
+  const OutputScope scope(system);
+  std::vector<Output> outputs;
+  for (const auto& item : node) {
+    const std::string name = printable_name(item.first, "a name in " + what, true);
+    // one CSV column each: not t, q, der(q), energy, lambda(c), nor another output's name
+    if (!columns_.insert(name).second) {
+      fail(item.first, "'" + name + "' is already the name of a CSV column");
+    }
+    outputs.push_back({name, scalar_expr(item.second, scope, name), at(item.first)});
+  }
+  return outputs;
+}
+
+// stop_when: [expr, ...]: functions of t, q and der(q) (and of outputs' names: accelerations,
+// multipliers); the run stops when one, non-zero at the start, reaches 0.
+void ModelReader::read_stop_when(const YAML::Node& node, System& system) {
+  if (!node.IsSequence()) fail(node, "stop_when must be a list of expressions, e.g. [z, 2 - t]");
+  const OutputScope scope(system);
+  for (const auto& item : node) {
+    const std::string text = scalar(item, "a stop_when expression");
+    system.stop_when.push_back({text, scalar_expr(item, scope, "stop_when"), at(item)});
+  }
+}
+
+}  // namespace unidyn::model_reading
