@@ -180,6 +180,10 @@ int run_derive(const ModelCommands& c, const CommandModel& model) {
   return 0;
 }
 
+// How far the initial state may be off its constraints for `check` (|Ψ| and |A q' + e|, in the
+// model's own units).
+constexpr double kInitialResidualTolerance = 1e-9;
+
 int run_check(const ModelCommands& c, const CommandModel& model) {
   const System system = command_system(c, model.system);
   const EquationsOfMotion lagrange = lagrange_equations(system);
@@ -196,27 +200,63 @@ int run_check(const ModelCommands& c, const CommandModel& model) {
   fmt::print("  numeric agreement at {} random states: max relative residual {:.3g}\n",
              report.states, report.numeric_relative_residual);
 
-  // Constraints at the initial state: satisfied, independent.
+  // At the initial state: the constraints satisfied and independent, the equations solvable.
   const SimulationStart start = initial_state(system, parse_sets(c.sets));
   const CompiledSystem compiled(system, lagrange);
   CompiledSystemData data = compiled.make_data();
-  bool constraints_ok = true;
+  bool state_ok = true;
   if (compiled.constraint_count() > 0) {
     compiled.constraints(start.t0, start.q, start.qdot, start.parameters, data);
     const Eigen::VectorXd velocity =
         data.constraint_matrix * start.qdot + data.constraint_velocity_term;
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(data.constraint_matrix);
+    // the constraints that hold: all but the unilateral ones that start apart (Ψ > 0)
+    std::vector<Eigen::Index> holding;
+    double worst = 0;  // the largest residual, and what it is
+    std::string worst_text;
+    double max_psi = 0, max_velocity = 0;
+    const auto note = [&](double value, const char* what, std::size_t k) {
+      if (std::abs(value) <= worst) return;
+      worst = std::abs(value);
+      worst_text = fmt::format("{} of {} is {:.3g}", what, system.constraints[k].name, value);
+    };
+    for (std::size_t k = 0; k < compiled.constraint_count(); ++k) {
+      const auto K = static_cast<Eigen::Index>(k);
+      const bool position = compiled.is_position_constraint()[k];
+      const double psi = position ? data.constraint_position[K] : 0.0;
+      if (system.constraints[k].unilateral && psi > kInitialResidualTolerance) continue;
+      holding.push_back(K);
+      max_psi = std::max(max_psi, std::abs(psi));
+      max_velocity = std::max(max_velocity, std::abs(velocity[K]));
+      note(psi, "Psi", k);
+      note(velocity[K], "A q' + e", k);
+    }
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(data.constraint_matrix(holding, Eigen::all));
     fmt::print(
         "  constraints at the initial state: max |Psi| = {:.3g}, max |A q' + e| = {:.3g}, "
-        "rank A = {} of {}\n",
-        data.constraint_position.cwiseAbs().maxCoeff(), velocity.cwiseAbs().maxCoeff(), lu.rank(),
-        compiled.constraint_count());
-    constraints_ok = static_cast<std::size_t>(lu.rank()) == compiled.constraint_count();
-    if (!constraints_ok) fmt::print("  the constraints are not independent at the initial state\n");
+        "rank A = {} of {}{}\n",
+        max_psi, max_velocity, lu.rank(), holding.size(),
+        holding.size() < compiled.constraint_count() ? " (unilateral contacts apart left out)"
+                                                     : "");
+    if (static_cast<std::size_t>(lu.rank()) != holding.size()) {
+      fmt::print("  the constraints are not independent at the initial state\n");
+      state_ok = false;
+    }
+    if (worst > kInitialResidualTolerance) {
+      fmt::print("  the initial state violates the constraints (tolerance {:g}): {}\n",
+                 kInitialResidualTolerance, worst_text);
+      state_ok = false;
+    }
+  }
+  try {
+    Eigen::VectorXd qddot, lambda;
+    compiled.solve(start.t0, start.q, start.qdot, start.parameters, qddot, lambda, data);
+  } catch (const std::runtime_error& e) {
+    fmt::print("  the equations of motion cannot be solved at the initial state: {}\n", e.what());
+    state_ok = false;
   }
   const bool agree = report.symbolic_zero && report.numeric_relative_residual < 1e-9;
-  fmt::print("{}\n", agree && constraints_ok ? "check passed" : "check FAILED");
-  return agree && constraints_ok ? 0 : 1;
+  fmt::print("{}\n", agree && state_ok ? "check passed" : "check FAILED");
+  return agree && state_ok ? 0 : 1;
 }
 
 // The model's simulate: settings with the command line's overrides.
@@ -237,6 +277,45 @@ SimulationOptions options_for(const System& system, const ModelCommands& c) {
     throw std::invalid_argument("--method must be dopri5, rk4, cvode or rattle");
   }
   return o;
+}
+
+// The summary's figures of the rows: energy, constraint residuals and each multiplier's range,
+// the initial projection, gimbal lock, conserved quantities.
+void write_run_figures(std::FILE* out, const System& system, const SimulationSummary& s) {
+  if (s.has_energy && s.energy_not_conserved.empty()) {
+    fmt::print(out, "  energy: initial {:.12g}, relative drift {:.3g}\n", s.energy_initial,
+               s.energy_relative_drift);
+  } else if (s.has_energy) {
+    fmt::print(out,
+               "  energy not conserved ({}): E(0) = {:.12g}, E({:.6g}) = {:.12g}, change {:.6g}\n",
+               s.energy_not_conserved, s.energy_initial, s.last_row_time, s.energy_final,
+               s.energy_final - s.energy_initial);
+  }
+  if (!system.constraints.empty()) {
+    fmt::print(out, "  constraint residuals: max |Psi| {:.3g}, max |A q' + e| {:.3g}\n",
+               s.max_position_residual, s.max_velocity_residual);
+    if (s.initial_projection > 1e-10) {
+      fmt::print(out, "  note: the initial state was moved by {:.3g} onto the constraints\n",
+                 s.initial_projection);
+    }
+    for (const auto& m : s.multipliers) {
+      if (m.held) fmt::print(out, "  lambda({}): from {:.6g} to {:.6g}\n", m.name, m.min, m.max);
+    }
+  }
+  for (const Body& body : system.bodies) {
+    if (body.chart) {
+      fmt::print(out,
+                 "  Euler angles: closest to gimbal lock |[g1,g2,g3]| = {:.3g} at t = {:.6g}\n",
+                 s.closest_gimbal_lock, s.closest_gimbal_lock_time);
+      break;
+    }
+  }
+  for (const auto& d : s.conserved_drift) {
+    fmt::print(out, "  conserved {}: initial {:.12g}, max change {:.3g}", d.name, d.initial,
+               d.max_change);
+    if (d.initial != 0.0) fmt::print(out, " (relative {:.3g})", d.max_change / std::abs(d.initial));
+    fmt::print(out, "\n");
+  }
 }
 
 int run_simulate(const ModelCommands& c, const CommandModel& model) {
@@ -289,35 +368,12 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
              derive_seconds, run_seconds, s.stats.accepted_steps, s.stats.rejected_steps,
              s.stats.rhs_evaluations);
   fmt::print(out, "  evaluation: {}\n", compiled.evaluation());
-  if (s.has_energy) {
-    fmt::print(out, "  energy: initial {:.12g}, relative drift {:.3g}\n", s.energy_initial,
-               s.energy_relative_drift);
-  }
-  if (!system.constraints.empty()) {
-    fmt::print(out, "  constraint residuals: max |Psi| {:.3g}, max |A q' + e| {:.3g}\n",
-               s.max_position_residual, s.max_velocity_residual);
-    if (s.initial_projection > 1e-10) {
-      fmt::print(out, "  note: the initial state was moved by {:.3g} onto the constraints\n",
-                 s.initial_projection);
-    }
-  }
-  for (const Body& body : system.bodies) {
-    if (body.chart) {
-      fmt::print(out,
-                 "  Euler angles: closest to gimbal lock |[g1,g2,g3]| = {:.3g} at t = {:.6g}\n",
-                 s.closest_gimbal_lock, s.closest_gimbal_lock_time);
-      break;
-    }
-  }
-  for (const auto& d : s.conserved_drift) {
-    fmt::print(out, "  conserved {}: initial {:.12g}, max change {:.3g}", d.name, d.initial,
-               d.max_change);
-    if (d.initial != 0.0) fmt::print(out, " (relative {:.3g})", d.max_change / std::abs(d.initial));
-    fmt::print(out, "\n");
-  }
-  if (!s.phases.empty()) fmt::print(out, "  phases and events:\n");
-  for (const auto& phase : s.phases)
+  // figures of the rows computed: none when the run failed at its start
+  if (s.rows > 0) write_run_figures(out, system, s);
+  for (const auto& phase : s.phases) {
+    if (&phase == &s.phases.front()) fmt::print(out, "  phases and events:\n");
     fmt::print(out, "    t = {:.12g}: {}\n", phase.t, printable(phase.what));
+  }
   return s.ok && close_error.empty() ? 0 : 1;
 }
 

@@ -35,6 +35,36 @@ bool has_energy_column(const System& system) {
   return true;
 }
 
+// Why T + U is not conserved in the model, or "" (its forces all have potentials: see
+// has_energy_column).
+std::string energy_not_conserved(const System& system) {
+  const Expr& t = system.time();
+  const auto on_t = [&](const VectorExpr& v) { return v[0].has(t) || v[1].has(t) || v[2].has(t); };
+  bool driven = false;
+  for (const auto& f : system.forces) {
+    driven = driven || f.potential.has(t);
+    for (const auto& force : f.forces) driven = driven || on_t(force.force);
+    for (const auto& force : f.body_forces) driven = driven || on_t(force.force);
+    for (const auto& moment : f.moments) driven = driven || on_t(moment.moment);
+  }
+  for (const auto& p : system.particles) driven = driven || on_t(p.position);
+  for (const auto& b : system.bodies) {
+    driven = driven || on_t(b.center) || Expr(b.rotation).has(t);
+  }
+  bool friction = false, impacts = false;
+  for (const auto& c : system.constraints) {
+    driven = driven || c.expression.has(t);
+    friction = friction || c.friction.has_value();
+    impacts = impacts || (c.unilateral && c.restitution != 1);
+  }
+  std::string why;
+  const auto add = [&](const char* text) { why += (why.empty() ? "" : "; ") + std::string(text); };
+  if (driven) add("driven by t");
+  if (friction) add("dissipative: friction");
+  if (impacts) add("dissipative: impacts with restitution < 1");
+  return why;
+}
+
 double to_double(const Expr& e, const GiNaC::exmap& values) {
   const std::optional<double> v = real_value(e, values);
   if (!v) {
@@ -233,6 +263,8 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
   Projector projector(compiled, parameters);
   Contacts contacts(system, compiled, parameters);
   summary.has_energy = has_energy_column(system);
+  summary.energy_not_conserved = energy_not_conserved(system);
+  for (const auto& c : system.constraints) summary.multipliers.push_back({c.name});
 
   // y = (q, q̇), y' = (q̇, q̈)
   Eigen::VectorXd qddot, lambda;
@@ -270,6 +302,16 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
         conserved_initial[c] = observed[conserved_begin + c];
         summary.conserved_drift.push_back({system.conserved[c].name, conserved_initial[c], 0.0});
       }
+    }
+    summary.energy_final = E;
+    summary.last_row_time = t;
+    for (std::size_t k = 0; k < summary.multipliers.size(); ++k) {
+      if (!contacts.active()[k]) continue;
+      auto& range = summary.multipliers[k];
+      const double value = lambda[static_cast<Eigen::Index>(k)];
+      range.min = range.held ? std::min(range.min, value) : value;
+      range.max = range.held ? std::max(range.max, value) : value;
+      range.held = true;
     }
     energy_scale = std::max(energy_scale, T + std::abs(U));
     max_energy_error = std::max(max_energy_error, std::abs(E - summary.energy_initial));

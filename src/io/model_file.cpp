@@ -101,7 +101,14 @@ System ModelReader::read(const YAML::Node& root) {
   for (const auto& c : system.constraints) columns_.insert("lambda(" + c.name + ")");
   if (root["outputs"]) system.outputs = read_outputs(root["outputs"], system, "outputs");
   if (root["conserved"]) system.conserved = read_outputs(root["conserved"], system, "conserved");
+  // stop_when: at the top or under simulate:, not both
+  const bool under_simulate = root["simulate"] && root["simulate"]["stop_when"];
+  if (root["stop_when"] && under_simulate) {
+    fail(root["simulate"]["stop_when"],
+         "stop_when is given twice (at the top and under simulate:)");
+  }
   if (root["stop_when"]) read_stop_when(root["stop_when"], system);
+  if (under_simulate) read_stop_when(root["simulate"]["stop_when"], system);
   system.largest_expression = largest_at_;
   system.largest_expression_terms = largest_terms_;
   return system;

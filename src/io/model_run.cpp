@@ -116,7 +116,9 @@ void ModelReader::read_initial(const YAML::Node& node, System& system) {
 
 void ModelReader::read_simulate(const YAML::Node& node, System& system) {
   expect_map(node, "simulate");
-  expect_keys(node, {"t_end", "output_step", "method", "rtol", "atol", "step"}, "simulate");
+  // (its stop_when is read with the outputs, whose names it may use)
+  expect_keys(node, {"t_end", "output_step", "method", "rtol", "atol", "step", "stop_when"},
+              "simulate");
   SimulationSettings& s = system.simulate;
   if (node["t_end"]) s.t_end = number(node["t_end"], "t_end");
   if (node["output_step"]) s.output_step = number(node["output_step"], "output_step");

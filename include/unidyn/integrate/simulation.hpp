@@ -43,6 +43,13 @@ struct SimulationSummary {
   std::size_t rows = 0;
   bool has_energy = false;
   double energy_initial = 0.0;
+  // E and t at the last row
+  double energy_final = 0.0;
+  double last_row_time = 0.0;
+  // Why E = T + U is not a constant of the motion ("" when it is): "driven by t" (forces,
+  // constraints or positions that depend on time), "dissipative: friction", "dissipative:
+  // impacts with restitution < 1" (joined by "; ").
+  std::string energy_not_conserved;
   // max |E − E0| / max over the run of (T + |U|)
   double energy_relative_drift = 0.0;
   // max over rows of |Ψ| and of |A q̇ + e|
@@ -61,6 +68,15 @@ struct SimulationSummary {
   double closest_gimbal_lock = 1.0;
   double closest_gimbal_lock_time = 0.0;
   StepperStats stats;
+  // Each constraint's multiplier over the rows where the constraint holds (a contact that
+  // pulls, λ < 0, shows here).
+  struct MultiplierRange {
+    std::string name;
+    double min = 0.0;
+    double max = 0.0;
+    bool held = false;  // whether it held at any row
+  };
+  std::vector<MultiplierRange> multipliers;
   // The phases: each contact's state at the start, then every event (contact lost or made, an
   // impact, a stop_when reached) at its time, in order.
   struct Phase {

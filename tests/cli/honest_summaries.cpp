@@ -1,0 +1,126 @@
+// Summaries that say what happened and checks that fail when they should: `check` fails on an
+// initial state off its constraints or with a singular mass matrix; `simulate` says why the
+// energy of a driven or dissipative model changes (the figures from the CSV's own energy column),
+// gives each multiplier's range (from the CSV's lambda column), prints no figures for rows it did
+// not compute, and takes stop_when under simulate:.
+#include <algorithm>
+#include <string>
+
+#include "cli_support.hpp"
+
+namespace unidyn {
+namespace {
+
+using namespace cli_test;
+
+// A rod of length L in the plane, started at x = X.
+std::string rod_model(const std::string& x) {
+  const std::string path = temp_path("rod.yaml");
+  write_file(path,
+             "unidyn: 1\nparameters: {m: 1, g: 9.81, L: 1}\ncoordinates: [x, y]\nparticles:\n"
+             "  P: {mass: m, position: [x, y, 0]}\nforces:\n  - gravity: -g*E2\nconstraints:\n"
+             "  - {name: rod, position: x^2 + y^2 - L^2}\ninitial: {x: " +
+                 x + "}\n");
+  return path;
+}
+
+TEST(HonestSummaries, CheckFailsOffTheConstraints) {
+  const Outcome off = run("check '" + rod_model("100") + "'");
+  EXPECT_EQ(off.status, 1) << off.out << off.err;
+  EXPECT_TRUE(contains(off.out, "the initial state violates the constraints")) << off.out;
+  EXPECT_TRUE(contains(off.out, "Psi of rod is 1e+04")) << off.out;
+  EXPECT_TRUE(contains(off.out, "check FAILED")) << off.out;
+  const Outcome on = run("check '" + rod_model("1") + "'");
+  EXPECT_EQ(on.status, 0) << on.out << on.err;
+  EXPECT_TRUE(contains(on.out, "check passed")) << on.out;
+}
+
+TEST(HonestSummaries, CheckFailsWithASingularMassMatrix) {
+  // y moves nothing: M = diag(m, 0)
+  const std::string path = temp_path("singular.yaml");
+  write_file(path,
+             "unidyn: 1\nparameters: {m: 1}\ncoordinates: [x, y]\nparticles:\n"
+             "  P: {mass: m, position: [x, 0, 0]}\n");
+  const Outcome r = run("check '" + path + "'");
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  EXPECT_TRUE(contains(r.out, "cannot be solved at the initial state")) << r.out;
+  // a unilateral contact that starts apart is not a violation
+  const Outcome ball = run("check bouncing-ball");
+  EXPECT_EQ(ball.status, 0) << ball.out;
+}
+
+// E(0), E(t_end) and the change agree with the energy column of the CSV; a conservative model
+// keeps "relative drift".
+TEST(HonestSummaries, EnergyOfDrivenAndDissipativeModels) {
+  for (const std::string model : {"rotating-hoop", "sphere-slide-roll", "bouncing-ball"}) {
+    const std::string csv = temp_path("energy.csv");
+    const Outcome r = run("simulate " + model + " -o '" + csv + "'");
+    ASSERT_EQ(r.status, 0) << r.out << r.err;
+    EXPECT_TRUE(contains(r.out, "energy not conserved (")) << r.out;
+    EXPECT_FALSE(contains(r.out, "relative drift")) << r.out;
+    const Csv rows = parse_csv(read_file(csv));
+    ASSERT_FALSE(rows.rows.empty());
+    const double e0 = rows.at(0, "energy"), e1 = rows.at(rows.rows.size() - 1, "energy");
+    EXPECT_NEAR(number_after(r.out, "E(0) = "), e0, 1e-9 * (1 + std::abs(e0))) << model;
+    EXPECT_NEAR(number_after(r.out, "change "), e1 - e0, 1e-5 * (1 + std::abs(e0))) << model;
+  }
+  EXPECT_TRUE(contains(run("simulate rotating-hoop -o /dev/null").out, "(driven by t)"));
+  EXPECT_TRUE(contains(run("simulate sphere-slide-roll -o /dev/null").out, "friction"));
+  const Outcome conservative = run("simulate spherical-pendulum -o /dev/null");
+  EXPECT_TRUE(contains(conservative.out, "relative drift")) << conservative.out;
+  EXPECT_FALSE(contains(conservative.out, "not conserved")) << conservative.out;
+}
+
+// Each multiplier's range over the run is the range of its CSV column.
+TEST(HonestSummaries, MultiplierRanges) {
+  const std::string csv = temp_path("helix.csv");
+  const Outcome r = run("simulate helix -o '" + csv + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Csv rows = parse_csv(read_file(csv));
+  const std::size_t column = rows.index("lambda(cylinder)");
+  double low = rows.rows[0][column], high = low;
+  for (const auto& row : rows.rows) {
+    low = std::min(low, row[column]);
+    high = std::max(high, row[column]);
+  }
+  const std::string label = "lambda(cylinder): from ";
+  ASSERT_TRUE(contains(r.out, label)) << r.out;
+  const std::string rest = r.out.substr(r.out.find(label) + label.size());
+  EXPECT_NEAR(std::stod(rest), low, 1e-5 * std::abs(low));
+  EXPECT_NEAR(std::stod(rest.substr(rest.find(" to ") + 4)), high, 1e-5 * std::abs(high) + 1e-9);
+}
+
+// A run that fails at its start computed no rows: no energy, residual or conserved figures.
+TEST(HonestSummaries, NoFiguresWithoutRows) {
+  const std::string path = temp_path("singular.yaml");
+  write_file(path,
+             "unidyn: 1\nparameters: {m: 1}\ncoordinates: [x, y]\nparticles:\n"
+             "  P: {mass: m, position: [x, 0, 0]}\nconserved:\n  px: m*der(x)\n");
+  const Outcome r = run("simulate '" + path + "' -o /dev/null");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(contains(r.out, "0 rows")) << r.out;
+  for (const char* figure : {"energy", "residuals", "conserved", "lambda("}) {
+    EXPECT_FALSE(contains(r.out, figure)) << figure << "\n" << r.out;
+  }
+}
+
+// stop_when may stand under simulate: (not in both places).
+TEST(HonestSummaries, StopWhenUnderSimulate) {
+  const std::string body =
+      "unidyn: 1\nparameters: {g: 9.81}\ncoordinates: [z]\nparticles:\n"
+      "  P: {mass: 1, position: [0, 0, z]}\nforces:\n  - gravity: -g*E3\ninitial: {z: 1}\n";
+  const std::string path = temp_path("stop.yaml");
+  write_file(path, body + "simulate: {t_end: 5, stop_when: [z]}\n");
+  const Outcome r = run("simulate '" + path + "' -o /dev/null");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "simulated until stop_when")) << r.out;
+  // the fall time sqrt(2/g)
+  EXPECT_TRUE(contains(r.out, "t = 0.45152364098")) << r.out;
+  write_file(path, body + "simulate: {stop_when: [z]}\nstop_when: [z]\n");
+  const Outcome twice = run("simulate '" + path + "' -o /dev/null");
+  expect_bad_input(twice, "twice");
+  EXPECT_TRUE(contains(twice.err, "stop_when is given twice")) << twice.err;
+}
+
+}  // namespace
+}  // namespace unidyn
