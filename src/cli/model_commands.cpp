@@ -368,6 +368,9 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
              derive_seconds, run_seconds, s.stats.accepted_steps, s.stats.rejected_steps,
              s.stats.rhs_evaluations);
   fmt::print(out, "  evaluation: {}\n", compiled.evaluation());
+  for (const auto& computed : start.computed) {
+    fmt::print(out, "  parameter computed from --set: {}\n", printable(computed));
+  }
   // figures of the rows computed: none when the run failed at its start
   if (s.rows > 0) write_run_figures(out, system, s);
   for (const auto& phase : s.phases) {

@@ -36,15 +36,25 @@ std::string join(const std::vector<double>& values) {
   return line;
 }
 
-// The rotation tensor given by `--from KIND VALUES...`.
-Tensor parse_rotation(const std::vector<std::string>& from) {
+// Which values of a parametrisation are angles: the axis-angle pair's last, every Euler angle.
+bool is_angle(const Parametrisation& p, std::size_t index) {
+  return (p.kind == Parametrisation::Kind::axis_angle && index == 3) ||
+         p.kind == Parametrisation::Kind::euler;
+}
+
+// The rotation tensor given by `--from KIND VALUES...` (angles in degrees with --degrees).
+Tensor parse_rotation(const std::vector<std::string>& from, bool degrees) {
   const Parametrisation kind = Parametrisation::parse(from.at(0));
   std::vector<double> values;
-  for (std::size_t n = 1; n < from.size(); ++n) values.push_back(parse_number(from[n]));
+  for (std::size_t n = 1; n < from.size(); ++n) {
+    const double value = parse_number(from[n]);
+    values.push_back(degrees && is_angle(kind, n - 1) ? value * std::numbers::pi / 180 : value);
+  }
   return rotation_from(kind, values);
 }
 
-void print_show(const Tensor& Q) {
+void print_show(const Tensor& Q, bool degrees) {
+  const double unit = degrees ? 180.0 / std::numbers::pi : 1.0;
   fmt::print("rotation tensor Q (rows; Q_ij = E_i . Q E_j):\n");
   for (int i = 0; i < 3; ++i) fmt::print("  {:>22} {:>22} {:>22}\n", Q(i, 0), Q(i, 1), Q(i, 2));
   const AxisAngle a = axis_angle(Q);
@@ -59,12 +69,13 @@ void print_show(const Tensor& Q) {
   } catch (const SingularConfiguration& error) {
     fmt::print("rodrigues (6.36): undefined ({})\n", error.what());
   }
-  fmt::print("euler angles (6.20), rad; [g1,g2,g3] is zero at gimbal lock:\n");
+  fmt::print("euler angles (6.20), {}; [g1,g2,g3] is zero at gimbal lock:\n",
+             degrees ? "deg" : "rad");
   for (const EulerSet& set : all_euler_sets()) {
     const EulerAngles angles = euler_angles(set, Q);
     fmt::print("  {}: {:>22} {:>22} {:>22}   [g1,g2,g3] = {:+.6f}{}\n", set.name(),
-               angles.angles[0], angles.angles[1], angles.angles[2], angles.volume,
-               angles.singular ? "  GIMBAL LOCK (first angle set to 0)" : "");
+               angles.angles[0] * unit, angles.angles[1] * unit, angles.angles[2] * unit,
+               angles.volume, angles.singular ? "  GIMBAL LOCK (first angle set to 0)" : "");
   }
 }
 
@@ -76,13 +87,14 @@ void add_rotation_command(CLI::App& app, RotationCommand& command) {
 
   const std::string kinds =
       "KIND is matrix (9 numbers, row by row), axis-angle (x y z angle), quaternion (e0 e1 e2 e3), "
-      "rodrigues (3 numbers) or euler:I-J-K (3 angles); angles in radians";
+      "rodrigues (3 numbers) or euler:I-J-K (3 angles); angles in radians (degrees with --degrees)";
   command.convert = command.rotation->add_subcommand(
       "convert", "Convert a rotation from one parametrisation to another. " + kinds);
   command.convert->add_option("--from", command.from, "KIND VALUES...")
       ->required()
       ->expected(2, 10);
   command.convert->add_option("--to", command.to, "KIND")->required();
+  command.convert->add_flag("--degrees", command.degrees, "angles in degrees, given and printed");
 
   command.show = command.rotation->add_subcommand(
       "show",
@@ -90,15 +102,20 @@ void add_rotation_command(CLI::App& app, RotationCommand& command) {
       "gimbal lock. " +
           kinds);
   command.show->add_option("--from", command.from, "KIND VALUES...")->required()->expected(2, 10);
+  command.show->add_flag("--degrees", command.degrees, "angles in degrees, given and printed");
 }
 
 int run_rotation_command(const RotationCommand& command) {
-  const Tensor Q = parse_rotation(command.from);
+  const Tensor Q = parse_rotation(command.from, command.degrees);
   if (command.convert->parsed()) {
     const Parametrisation to = Parametrisation::parse(command.to);
-    fmt::print("{}\n", join(rotation_to(to, Q)));
+    std::vector<double> values = rotation_to(to, Q);
+    for (std::size_t n = 0; n < values.size() && command.degrees; ++n) {
+      if (is_angle(to, n)) values[n] *= 180.0 / std::numbers::pi;
+    }
+    fmt::print("{}\n", join(values));
   } else {
-    print_show(Q);
+    print_show(Q, command.degrees);
   }
   return 0;
 }

@@ -13,6 +13,7 @@ struct RotationCommand {
   CLI::App* show = nullptr;
   std::vector<std::string> from;
   std::string to;
+  bool degrees = false;  // angles typed and printed in degrees
 };
 void add_rotation_command(CLI::App& app, RotationCommand& command);
 int run_rotation_command(const RotationCommand& command);

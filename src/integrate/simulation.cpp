@@ -2,6 +2,7 @@
 #include "unidyn/integrate/simulation.hpp"
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -17,6 +18,7 @@
 #include "unidyn/integrate/rattle.hpp"
 #include "unidyn/integrate/rk4.hpp"
 #include "unidyn/rotation/euler_angles.hpp"
+#include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {
@@ -33,6 +35,14 @@ bool has_energy_column(const System& system) {
     if (!f.conservative) return false;
   }
   return true;
+}
+
+// "L2 = 6 from 2*L"
+std::string fmt_parameter(const std::string& name, double value, const Expr& definition) {
+  std::ostringstream text;
+  text.precision(17);
+  text << name << " = " << value << " from " << definition;
+  return text.str();
 }
 
 // Why T + U is not conserved in the model, or "" (its forces all have potentials: see
@@ -238,9 +248,24 @@ SimulationStart initial_state(const System& system,
                                   ": not a parameter, coordinate or der(coordinate)");
     }
   }
+  // the parameters defined by expressions of others, anew from the values given, in order
   GiNaC::exmap values;
   for (std::size_t k = 0; k < system.parameters.size(); ++k) {
-    values[system.parameters[k].symbol] = start.parameters[k];
+    const Parameter& p = system.parameters[k];
+    const bool overridden = std::any_of(overrides.begin(), overrides.end(),
+                                        [&](const auto& o) { return o.first == p.name; });
+    if (p.derived && !overridden) {
+      const auto value = real_value(p.definition, values);
+      if (!value) {
+        throw std::invalid_argument("parameter " + p.name + " = " + to_text(p.definition) +
+                                    " has no real value with the values given");
+      }
+      if (*value != start.parameters[k]) {
+        start.computed.push_back(fmt_parameter(p.name, *value, p.definition));
+      }
+      start.parameters[k] = *value;
+    }
+    values[p.symbol] = start.parameters[k];
   }
   start.q.resize(static_cast<Eigen::Index>(n));
   start.qdot.resize(static_cast<Eigen::Index>(n));

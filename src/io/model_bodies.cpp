@@ -7,8 +7,21 @@ void ModelReader::read_parameters(const YAML::Node& node, System& system) {
   expect_map(node, "parameters");
   for (const auto& item : node) {
     const std::string name = new_name(item.first, system, "parameter");
-    const double value = number(item.second, "parameter '" + name + "'");
-    system.parameters.push_back({name, GiNaC::realsymbol(name), value, at(item.first)});
+    // a number as typed, or an expression of numbers and earlier parameters (pi/10, 2*L, 30*deg)
+    if (const auto value = plain_number(item.second)) {
+      system.parameters.push_back({name, GiNaC::realsymbol(name), *value, at(item.first)});
+      continue;
+    }
+    const Expr definition =
+        scalar_expr(item.second, SystemScope(system), "parameter '" + name + "'");
+    const auto value = real_value(definition, system.parameter_values());
+    if (!value) {
+      fail(item.second, "parameter '" + name +
+                            "' must be a real number, or an expression of numbers and earlier "
+                            "parameters (such as pi/10 or 2*L)");
+    }
+    system.parameters.push_back(
+        {name, GiNaC::realsymbol(name), *value, at(item.first), definition, true});
   }
 }
 

@@ -82,6 +82,21 @@ class ModelReader {
     return node.Scalar();
   }
 
+  // The value of a scalar that is a plain decimal number, as std::stod reads it; else nothing.
+  std::optional<double> plain_number(const YAML::Node& node) const {
+    if (!node.IsScalar()) return std::nullopt;
+    const std::string& text = node.Scalar();
+    std::size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(text, &used);
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+    if (used != text.size() || !std::isfinite(x)) return std::nullopt;
+    return x;
+  }
+
   double number(const YAML::Node& node, const std::string& what) const {
     const std::string text = scalar(node, what);
     std::size_t used = 0;
@@ -166,9 +181,9 @@ class ModelReader {
   std::string new_name(const YAML::Node& node, const System& system, const std::string& what) {
     const std::string name = scalar(node, what);
     static const std::set<std::string> reserved = {
-        "t",    "pi",   "E1",   "E2",    "E3",    "der",  "sin",   "cos", "tan",
-        "asin", "acos", "atan", "atan2", "sinh",  "cosh", "tanh",  "exp", "log",
-        "sqrt", "abs",  "sign", "dot",   "cross", "norm", "lambda"};
+        "t",   "pi",   "deg",  "E1",   "E2",    "E3",    "der",  "sin",   "cos",
+        "tan", "asin", "acos", "atan", "atan2", "sinh",  "cosh", "tanh",  "exp",
+        "log", "sqrt", "abs",  "sign", "dot",   "cross", "norm", "lambda"};
     bool valid =
         !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
     for (char c : name) valid = valid && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');

@@ -15,9 +15,10 @@
 //   NUMBER     := (digits ('.' digits?)? | '.' digits) ([eE] [+-]? digits)?    exact rationals
 //
 // Whitespace, newlines included, may separate any two tokens. Built-in names: pi (GiNaC::Pi),
-// E1 E2 E3 (the fixed basis); functions sin cos tan asin acos atan sinh cosh tanh exp log sqrt
-// abs sign of one scalar, atan2(y, x), dot(u, v), cross(u, v), norm(v). sign is GiNaC's csgn
-// (−1, 0, 1 for real arguments), abs is GiNaC's abs. Other names and calls go to the Scope.
+// deg (π/180: 30*deg), E1 E2 E3 (the fixed basis); functions sin cos tan asin acos atan sinh cosh
+// tanh exp log sqrt abs sign of one scalar, atan2(y, x), dot(u, v), cross(u, v), norm(v). sign is
+// GiNaC's csgn (−1, 0, 1 for real arguments), abs is GiNaC's abs. Other names and calls go to the
+// Scope.
 //
 // Types: scalar ± scalar, vector ± vector, scalar * vector, vector * scalar, vector / scalar,
 // scalar / scalar, scalar ^ scalar. Anything else is a ModelError that says what was expected.
@@ -272,7 +273,7 @@ auto guarded(const SourcePosition& where, std::string_view what, F&& f) -> declt
 }
 
 bool is_constant(std::string_view name) {
-  return name == "pi" || name == "E1" || name == "E2" || name == "E3";
+  return name == "pi" || name == "deg" || name == "E1" || name == "E2" || name == "E3";
 }
 
 Value negated(const Value& v) {
@@ -617,9 +618,10 @@ Operand Parser::parse_name() {
   return {std::move(*value), name.where, size, cached->second};
 }
 
-// pi and the fixed basis E1, E2, E3.
+// pi, deg = π/180 (so that 30*deg is 30 degrees in radians) and the fixed basis E1, E2, E3.
 Operand Parser::builtin_constant(const Token& name) const {
   if (name.text == "pi") return {Value::of(GiNaC::Pi), name.where, 1, 0};
+  if (name.text == "deg") return {Value::of(GiNaC::Pi / 180), name.where, 1, 8};
   const int i = name.text[1] - '0';
   return {Value::of(basis_vector_expr(i)), name.where, 3, 1};
 }
@@ -749,7 +751,7 @@ bool Parser::scope_knows(std::string_view name) const {
 }
 
 std::vector<std::string> Parser::scope_names() const {
-  std::vector<std::string> names{"pi", "E1", "E2", "E3"};
+  std::vector<std::string> names{"pi", "deg", "E1", "E2", "E3"};
   try {
     for (std::string& name : scope_.names()) names.push_back(std::move(name));
   } catch (const std::exception&) {

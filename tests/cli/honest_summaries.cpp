@@ -4,6 +4,8 @@
 // gives each multiplier's range (from the CSV's lambda column), prints no figures for rows it did
 // not compute, and takes stop_when under simulate:.
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <string>
 
 #include "cli_support.hpp"
@@ -120,6 +122,28 @@ TEST(HonestSummaries, StopWhenUnderSimulate) {
   const Outcome twice = run("simulate '" + path + "' -o /dev/null");
   expect_bad_input(twice, "twice");
   EXPECT_TRUE(contains(twice.err, "stop_when is given twice")) << twice.err;
+}
+
+// A parameter defined from others is computed anew from values given with --set, and the
+// summary says so; one given with --set itself is used as given.
+TEST(HonestSummaries, ParametersComputedFromSet) {
+  const std::string path = temp_path("derived.yaml");
+  write_file(path,
+             "unidyn: 1\nparameters: {m: 1, g: 9.81, L: 1, L2: 2*L, tilt: 30*deg}\n"
+             "coordinates: [phi]\nparticles:\n  P: {mass: m, position: \"L2*[sin(phi), 0, "
+             "-cos(phi)]\"}\nforces:\n  - gravity: -g*E3\ninitial: {phi: tilt}\n");
+  const std::string csv = temp_path("derived.csv");
+  const Outcome r = run("simulate '" + path + "' --set L=3 --t-end 0.1 -o '" + csv + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "parameter computed from --set: L2 = 6 from 2*L")) << r.out;
+  const Csv rows = parse_csv(read_file(csv));
+  // E = -m g L2 cos(30°) with L2 = 6
+  EXPECT_NEAR(rows.at(0, "energy"), -9.81 * 6 * std::cos(std::numbers::pi / 6), 1e-12);
+  const Outcome direct = run("simulate '" + path + "' --set L2=4 --t-end 0.1 -o '" + csv + "'");
+  ASSERT_EQ(direct.status, 0) << direct.err;
+  EXPECT_FALSE(contains(direct.out, "computed from --set")) << direct.out;
+  EXPECT_NEAR(parse_csv(read_file(csv)).at(0, "energy"), -9.81 * 4 * std::cos(std::numbers::pi / 6),
+              1e-12);
 }
 
 }  // namespace

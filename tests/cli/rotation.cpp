@@ -122,6 +122,35 @@ TEST(CliRotation, ConvertEuler323ToAxisAngleW3) {
   EXPECT_NEAR(v[2], axis.z(), 1e-14);
 }
 
+// --degrees: the W3 rotation typed in degrees gives the axis-angle pair with the angle in
+// degrees, 33.3161°; Euler angles in degrees read back; other values are not angles.
+TEST(CliRotation, Degrees) {
+  const double d = 180 / kPi;
+  const Outcome r = run("rotation convert --degrees --from euler:3-2-3 " +
+                        join({0.2 * d, -0.5 * d, 0.1 * d}) + " --to axis-angle");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::vector<double> v = numbers(r.out);
+  ASSERT_EQ(v.size(), 4u) << r.out;
+  EXPECT_NEAR(v[0], 0.043135, 1e-6);
+  EXPECT_NEAR(v[3], 33.3161, 1e-4);
+  const Outcome back =
+      run("rotation convert --degrees --from axis-angle " + join(v) + " --to euler:3-2-3");
+  const std::vector<double> angles = numbers(back.out);
+  ASSERT_EQ(angles.size(), 3u) << back.out << back.err;
+  // γ² ∈ [0, π] for a symmetric set: (0.2, −0.5, 0.1) is returned as (0.2 − π, 0.5, 0.1 − π)
+  EXPECT_NEAR(angles[0], 0.2 * d - 180, 1e-10);
+  EXPECT_NEAR(angles[1], 0.5 * d, 1e-10);
+  EXPECT_NEAR(angles[2], 0.1 * d - 180, 1e-10);
+  const Outcome quaternion =
+      run("rotation convert --degrees --from axis-angle 0 0 1 90 --to quaternion");
+  const std::vector<double> e = numbers(quaternion.out);
+  ASSERT_EQ(e.size(), 4u);
+  EXPECT_NEAR(e[0], std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(e[3], std::sqrt(0.5), 1e-15);
+  EXPECT_TRUE(run("rotation show --degrees --from axis-angle 0 0 1 90")
+                  .out.find("euler angles (6.20), deg") != std::string::npos);
+}
+
 // Exercise 6.4(g), (6.36): matrix [[0,0,1],[1,0,0],[0,1,0]] → quaternion (½, ½, ½, ½).
 TEST(CliRotation, ConvertMatrixToQuaternion) {
   const Outcome r = run("rotation convert --from matrix 0 0 1 1 0 0 0 1 0 --to quaternion");

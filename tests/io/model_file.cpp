@@ -638,8 +638,9 @@ TEST(ModelFileErrors, SimulateSettings) {
   expect_error(simulate("atol: 0"), 6, 18, {"atol must be positive"});
   expect_error(simulate("step: -0.1"), 6, 18, {"step must not be negative"});
   expect_error(base() + "simulate: 10\n", 6, 11, {"simulate must be a mapping"});
-  expect_error(yaml({"unidyn: 1", "parameters: {m: 1 kg}", "coordinates: [x]"}), 2, 17,
-               {"parameter 'm' must be a number"});
+  // a parameter is an expression (2*L): a unit after the number is not one
+  expect_error(yaml({"unidyn: 1", "parameters: {m: 1 kg}", "coordinates: [x]"}), 2, 19,
+               {"expected an operator such as '*' or '+' before 'kg'"});
 }
 
 // Forces: points that exist, two different particles, one law per spring, three components.

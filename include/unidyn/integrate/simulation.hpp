@@ -31,6 +31,9 @@ SimulationOptions simulation_options(const SimulationSettings& settings);
 // The state of a system: parameters' values, q, q̇ at t0.
 struct SimulationStart {
   std::vector<double> parameters;
+  // Parameters defined by expressions that were computed anew from values given with --set
+  // ("L2 = 6 from 2*L"), for the summary.
+  std::vector<std::string> computed;
   Eigen::VectorXd q;
   Eigen::VectorXd qdot;
   double t0 = 0.0;

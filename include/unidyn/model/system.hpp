@@ -20,6 +20,10 @@ struct Parameter {
   GiNaC::realsymbol symbol;
   double value;
   SourcePosition where;
+  // A parameter given as an expression of earlier parameters (L2: 2*L): that expression, whose
+  // value is recomputed when --set changes one of them; 0 for one given as a number.
+  Expr definition = 0;
+  bool derived = false;
 };
 
 // A particle of mass m at r(q, t).
