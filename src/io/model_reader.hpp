@@ -62,7 +62,8 @@ class ModelReader {
         std::string list;
         for (const auto& k : allowed) list += (list.empty() ? "" : ", ") + k;
         throw ModelError(at(item.first), "unknown key '" + key + "' in " + what +
-                                             " (expected one of: " + list + ")");
+                                             " (expected one of: " + list + ")" +
+                                             (unbalanced(key) ? kCommaHint : ""));
       }
     }
   }
@@ -119,7 +120,31 @@ class ModelReader {
 
   Expr scalar_expr(const YAML::Node& node, const Scope& scope, const std::string& what) const {
     const ScalarText s = scalar_text(node, what);
-    return within_budget(parse_scalar(s.text, scope, s.where), s.where);
+    return within_budget(hint_commas(s, [&] { return parse_scalar(s.text, scope, s.where); }),
+                         s.where);
+  }
+
+  // A YAML flow collection ({..} or [..]) splits an unquoted expression at its commas, leaving
+  // unbalanced brackets: say so when such a piece does not parse.
+  static bool unbalanced(std::string_view text) {
+    int round = 0, square = 0;
+    for (const char c : text) {
+      round += c == '(' ? 1 : c == ')' ? -1 : 0;
+      square += c == '[' ? 1 : c == ']' ? -1 : 0;
+    }
+    return round != 0 || square != 0;
+  }
+  static constexpr const char* kCommaHint =
+      " (YAML's {..} and [..] split a value at its commas: quote an expression that contains "
+      "one, e.g. \"dot(P.position, E3)\")";
+  template <typename Parse>
+  static auto hint_commas(const ScalarText& s, Parse parse) -> decltype(parse()) {
+    try {
+      return parse();
+    } catch (const ModelError& e) {
+      if (!unbalanced(s.text)) throw;
+      throw ModelError(e.where(), e.message() + kCommaHint);
+    }
   }
 
   // Notes the expression with the largest power of a sum (named when an expansion of the
@@ -160,12 +185,18 @@ class ModelReader {
   VectorExpr vector_expr(const YAML::Node& node, const Scope& scope,
                          const std::string& what) const {
     if (node.IsSequence()) {
-      if (node.size() != 3) fail(node, what + " must have three components [x, y, z]");
+      if (node.size() != 3) {
+        bool split = false;
+        for (const auto& element : node)
+          split = split || (element.IsScalar() && unbalanced(element.Scalar()));
+        fail(node, what + " must have three components [x, y, z]" + (split ? kCommaHint : ""));
+      }
       return {scalar_expr(node[0], scope, what), scalar_expr(node[1], scope, what),
               scalar_expr(node[2], scope, what)};
     }
     const ScalarText s = scalar_text(node, what);
-    return within_budget(parse_vector(s.text, scope, s.where), s.where);
+    return within_budget(hint_commas(s, [&] { return parse_vector(s.text, scope, s.where); }),
+                         s.where);
   }
 
   // A name of free text that reaches the terminal (and, for a CSV column, a spreadsheet).
