@@ -28,7 +28,10 @@ void ModelReader::read_parameters(const YAML::Node& node, System& system) {
 void ModelReader::read_coordinates(const YAML::Node& node, System& system) {
   if (!node.IsSequence() || node.size() == 0)
     fail(node, "coordinates must be a list of names, e.g. [x, y]");
-  for (const auto& item : node) system.configuration.add(new_name(item, system, "coordinate"));
+  for (const auto& item : node) {
+    system.configuration.add(new_name(item, system, "coordinate"));
+    coordinate_at_.push_back(at(item));
+  }
 }
 
 void ModelReader::read_particles(const YAML::Node& node, System& system) {
@@ -43,6 +46,7 @@ void ModelReader::read_particles(const YAML::Node& node, System& system) {
     const SystemScope scope(system);
     const Expr mass = scalar_expr(spec["mass"], scope, "mass");
     expect_state_only(spec["mass"], mass, system, "a mass");
+    expect_positive_mass(spec["mass"], mass, system);
     const VectorExpr position = vector_expr(spec["position"], scope, "position");
     expect_state_only(spec["position"], position, system, "a position");
     system.particles.push_back({name, mass, position, at(item.first)});
@@ -62,6 +66,7 @@ void ModelReader::read_bodies(const YAML::Node& node, System& system) {
     const SystemScope scope(system);
     const Expr mass = scalar_expr(spec["mass"], scope, "mass");
     expect_state_only(spec["mass"], mass, system, "a mass");
+    expect_positive_mass(spec["mass"], mass, system);
     shape_mass_ = mass;
     Body body{name,
               mass,
@@ -77,6 +82,8 @@ void ModelReader::read_bodies(const YAML::Node& node, System& system) {
     const VectorExpr center = vector_expr(spec["center"], with_body, "center");
     expect_state_only(spec["center"], center, system, "a centre of mass");
     system.bodies.back().center = center;
+    expect_realisable_inertia(spec["inertia"], system.bodies.back().inertia, system);
+    expect_inertia_about_rotation_axes(spec["rotation"], system.bodies.size() - 1, system);
   }
 }
 

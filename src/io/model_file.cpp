@@ -90,6 +90,7 @@ System ModelReader::read(const YAML::Node& root) {
   if (system.particles.empty() && system.bodies.empty()) {
     throw ModelError(at(root), "the model has no particles and no bodies");
   }
+  expect_every_coordinate_moves(system);
   if (root["forces"]) read_forces(root["forces"], system);
   if (root["constraints"]) read_constraints(root["constraints"], system);
   system.initial_values.assign(system.coordinates().size(), 0);

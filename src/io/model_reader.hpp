@@ -245,11 +245,19 @@ class ModelReader {
   std::vector<Output> read_outputs(const YAML::Node& node, const System& system,
                                    const std::string& what);
   void read_stop_when(const YAML::Node& node, System& system);
+  // Checks with the parameters' values (model_checks.cpp).
+  void expect_positive_mass(const YAML::Node& node, const Expr& mass, const System& system) const;
+  void expect_realisable_inertia(const YAML::Node& node, const GiNaC::matrix& J,
+                                 const System& system) const;
+  void expect_inertia_about_rotation_axes(const YAML::Node& node, std::size_t b,
+                                          const System& system) const;
+  void expect_every_coordinate_moves(const System& system) const;
 
   std::string file_;
   std::string_view source_;
-  std::set<std::string> columns_;  // names of the CSV columns taken so far
-  Expr shape_mass_;                // the mass of the body whose inertia is being read
+  std::set<std::string> columns_;              // names of the CSV columns taken so far
+  Expr shape_mass_;                            // the mass of the body whose inertia is being read
+  std::vector<SourcePosition> coordinate_at_;  // where each coordinate is named
   // the expression read so far with the largest expansion, and where
   mutable double largest_terms_ = 0;
   mutable SourcePosition largest_at_;

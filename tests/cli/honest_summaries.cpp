@@ -38,11 +38,11 @@ TEST(HonestSummaries, CheckFailsOffTheConstraints) {
 }
 
 TEST(HonestSummaries, CheckFailsWithASingularMassMatrix) {
-  // y moves nothing: M = diag(m, 0)
+  // r = (x y, y, 0): M = m [[y², x y], [x y, x² + 1]] has det m² y⁴, singular at y = 0
   const std::string path = temp_path("singular.yaml");
   write_file(path,
              "unidyn: 1\nparameters: {m: 1}\ncoordinates: [x, y]\nparticles:\n"
-             "  P: {mass: m, position: [x, 0, 0]}\n");
+             "  P: {mass: m, position: [x*y, y, 0]}\n");
   const Outcome r = run("check '" + path + "'");
   EXPECT_EQ(r.status, 1) << r.out << r.err;
   EXPECT_TRUE(contains(r.out, "cannot be solved at the initial state")) << r.out;
@@ -97,7 +97,7 @@ TEST(HonestSummaries, NoFiguresWithoutRows) {
   const std::string path = temp_path("singular.yaml");
   write_file(path,
              "unidyn: 1\nparameters: {m: 1}\ncoordinates: [x, y]\nparticles:\n"
-             "  P: {mass: m, position: [x, 0, 0]}\nconserved:\n  px: m*der(x)\n");
+             "  P: {mass: m, position: [x*y, y, 0]}\nconserved:\n  px: m*der(x)\n");
   const Outcome r = run("simulate '" + path + "' -o /dev/null");
   EXPECT_EQ(r.status, 1);
   EXPECT_TRUE(contains(r.out, "0 rows")) << r.out;
