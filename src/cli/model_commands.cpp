@@ -186,6 +186,8 @@ constexpr double kInitialResidualTolerance = 1e-9;
 
 int run_check(const ModelCommands& c, const CommandModel& model) {
   const System system = command_system(c, model.system);
+  // the initial state first: one that is bad input stops before anything is printed
+  const SimulationStart start = initial_state(system, parse_sets(c.sets));
   const EquationsOfMotion lagrange = lagrange_equations(system);
   const NewtonEquations newton = newton_equations(system);
   const EquivalenceReport report = check_equivalence(system, lagrange, newton);
@@ -201,7 +203,6 @@ int run_check(const ModelCommands& c, const CommandModel& model) {
              report.states, report.numeric_relative_residual);
 
   // At the initial state: the constraints satisfied and independent, the equations solvable.
-  const SimulationStart start = initial_state(system, parse_sets(c.sets));
   const CompiledSystem compiled(system, lagrange);
   CompiledSystemData data = compiled.make_data();
   bool state_ok = true;

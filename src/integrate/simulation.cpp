@@ -37,6 +37,13 @@ bool has_energy_column(const System& system) {
   return true;
 }
 
+std::string format_number(double x) {
+  std::ostringstream text;
+  text.precision(12);
+  text << x;
+  return text.str();
+}
+
 // "L2 = 6 from 2*L"
 std::string fmt_parameter(const std::string& name, double value, const Expr& definition) {
   std::ostringstream text;
@@ -174,6 +181,37 @@ void watch_euler_charts(const System& system, double t, const Eigen::VectorXd& y
   }
 }
 
+// A body described by Euler angles must not start at their gimbal lock, where the angle rates of
+// a given ω do not exist and the mass matrix is singular: bad input, with the Euler set that is
+// most regular at that rotation (or Euler parameters, which have no lock) as the way out.
+void expect_no_gimbal_lock(const System& system, const Eigen::VectorXd& q) {
+  for (const Body& body : system.bodies) {
+    if (!body.chart) continue;
+    const auto& c = body.chart->coordinates;
+    const Vec3 angles(q[static_cast<Eigen::Index>(c[0])], q[static_cast<Eigen::Index>(c[1])],
+                      q[static_cast<Eigen::Index>(c[2])]);
+    if (std::abs(euler_basis_volume(body.chart->set, angles)) > kGimbalLockStop) continue;
+    const Tensor Q = rotation_tensor(body.chart->set, angles);
+    const EulerSet* best = &all_euler_sets().front();
+    double best_volume = -1;
+    for (const EulerSet& set : all_euler_sets()) {
+      const double volume = std::abs(euler_angles(set, Q).volume);
+      if (volume > best_volume) {
+        best_volume = volume;
+        best = &set;
+      }
+    }
+    const auto& names = system.coordinates();
+    throw std::invalid_argument(
+        "body '" + body.name + "' starts at the gimbal lock of its " + body.chart->set.name() +
+        " Euler angles (" + names[c[1]].name + " = " + format_number(angles[1]) +
+        ", where only the sum or difference of " + names[c[0]].name + " and " + names[c[2]].name +
+        " is defined and the mass matrix is singular): start it elsewhere, or describe its "
+        "rotation with {euler: " +
+        best->name() + ", ...}, regular there, or with {quaternion: [e0, e1, e2, e3]}");
+  }
+}
+
 // The step of a fixed-step method: `step`, else output_step / 10, made a whole number of steps
 // per output interval.
 double fixed_step(const SimulationOptions& options) {
@@ -275,6 +313,7 @@ SimulationStart initial_state(const System& system,
     start.qdot[I] =
         qdot_override[i] ? *qdot_override[i] : to_double(system.initial_rates[i], values);
   }
+  expect_no_gimbal_lock(system, start.q);
   return start;
 }
 

@@ -146,5 +146,18 @@ TEST(HonestSummaries, ParametersComputedFromSet) {
               1e-12);
 }
 
+// An Euler-angle body started at its gimbal lock is bad input, with a set that is regular there.
+TEST(HonestSummaries, GimbalLockAtTheStart) {
+  for (const std::string command : {"simulate heavy-top -o /dev/null", "check heavy-top"}) {
+    const Outcome r = run(command + " --set theta=0");
+    expect_bad_input(r, command);
+    EXPECT_TRUE(contains(r.err, "body 'top' starts at the gimbal lock of its 3-1-3 Euler angles"))
+        << r.err;
+    EXPECT_TRUE(contains(r.err, "{euler: 1-2-3, ...}")) << r.err;
+    EXPECT_TRUE(contains(r.err, "quaternion")) << r.err;
+  }
+  EXPECT_EQ(run("check heavy-top --set theta=0.01").status, 0);
+}
+
 }  // namespace
 }  // namespace unidyn
