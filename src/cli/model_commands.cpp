@@ -2,6 +2,7 @@
 #include "model_commands.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <charconv>
@@ -18,6 +19,7 @@
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/equations/newton.hpp"
 #include "unidyn/equations/reduction.hpp"
+#include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/integrate/simulation.hpp"
 #include "unidyn/io/csv.hpp"
 #include "unidyn/io/equation_report.hpp"
@@ -187,7 +189,7 @@ constexpr double kInitialResidualTolerance = 1e-9;
 int run_check(const ModelCommands& c, const CommandModel& model) {
   const System system = command_system(c, model.system);
   // the initial state first: one that is bad input stops before anything is printed
-  const SimulationStart start = initial_state(system, parse_sets(c.sets));
+  SimulationStart start = initial_state(system, parse_sets(c.sets));
   const EquationsOfMotion lagrange = lagrange_equations(system);
   const NewtonEquations newton = newton_equations(system);
   const EquivalenceReport report = check_equivalence(system, lagrange, newton);
@@ -202,10 +204,21 @@ int run_check(const ModelCommands& c, const CommandModel& model) {
   fmt::print("  numeric agreement at {} random states: max relative residual {:.3g}\n",
              report.states, report.numeric_relative_residual);
 
-  // At the initial state: the constraints satisfied and independent, the equations solvable.
+  // At the initial state (its values not given computed from the constraints): the constraints
+  // satisfied and independent, the equations solvable.
   const CompiledSystem compiled(system, lagrange);
   CompiledSystemData data = compiled.make_data();
   bool state_ok = true;
+  try {
+    const std::vector<std::string> computed = complete_initial_state(system, compiled, start);
+    if (!computed.empty()) {
+      fmt::print("  initial values computed from the constraints: {}\n",
+                 printable(fmt::format("{}", fmt::join(computed, ", "))));
+    }
+  } catch (const InitialStateError& e) {
+    fmt::print("  {}\n", printable(e.what()));
+    state_ok = false;
+  }
   if (compiled.constraint_count() > 0) {
     compiled.constraints(start.t0, start.q, start.qdot, start.parameters, data);
     const Eigen::VectorXd velocity =
@@ -321,7 +334,7 @@ void write_run_figures(std::FILE* out, const System& system, const SimulationSum
 
 int run_simulate(const ModelCommands& c, const CommandModel& model) {
   const System system = command_system(c, model.system);
-  const SimulationStart start = initial_state(system, parse_sets(c.sets));
+  SimulationStart start = initial_state(system, parse_sets(c.sets));
   const SimulationOptions options = options_for(system, c);
   const auto clock_start = std::chrono::steady_clock::now();
   CompileOptions compile_options;
@@ -333,6 +346,10 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
   const CompiledSystem compiled(system, kane_equations(system), compile_options);
   const double derive_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  // the values given stay; the others come from the constraints (or, with --project, every value
+  // as given and then projected onto the constraints)
+  const std::vector<std::string> computed =
+      c.project ? std::vector<std::string>{} : complete_initial_state(system, compiled, start);
 
   const std::string path = c.output.empty() ? "-" : c.output;
   std::optional<CsvWriter> csv;
@@ -369,8 +386,12 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
              derive_seconds, run_seconds, s.stats.accepted_steps, s.stats.rejected_steps,
              s.stats.rhs_evaluations);
   fmt::print(out, "  evaluation: {}\n", compiled.evaluation());
-  for (const auto& computed : start.computed) {
-    fmt::print(out, "  parameter computed from --set: {}\n", printable(computed));
+  for (const auto& line : start.computed) {
+    fmt::print(out, "  parameter computed from --set: {}\n", printable(line));
+  }
+  if (!computed.empty()) {
+    fmt::print(out, "  initial values computed from the constraints: {}\n",
+               printable(fmt::format("{}", fmt::join(computed, ", "))));
   }
   // figures of the rows computed: none when the run failed at its start
   if (s.rows > 0) write_run_figures(out, system, s);
@@ -440,6 +461,9 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.simulate->add_option("--rtol", c.rtol, "relative tolerance (dopri5)")->check(kPositive);
   c.simulate->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
   c.simulate->add_flag("--reduced", c.reduced, "simulate the approach-II equations");
+  c.simulate->add_flag("--project", c.project,
+                       "start from every value as given, projected onto the constraints (all "
+                       "values may move) instead of computing the values not given");
   c.simulate
       ->add_option("--evaluation", c.evaluation,
                    "native (compiled C++, cached; the tape when no compiler) | tape")

@@ -99,6 +99,9 @@ Reduction eliminate_constraints(const System& full) {
       reduced.initial_values.erase(reduced.initial_values.begin() +
                                    static_cast<std::ptrdiff_t>(*k));
       reduced.initial_rates.erase(reduced.initial_rates.begin() + static_cast<std::ptrdiff_t>(*k));
+      for (auto* given : {&reduced.initial_value_given, &reduced.initial_rate_given}) {
+        if (given->size() > *k) given->erase(given->begin() + static_cast<std::ptrdiff_t>(*k));
+      }
       for (auto* outputs : {&reduced.outputs, &reduced.conserved, &reduced.stop_when}) {
         std::vector<Output> kept;
         for (auto& o : *outputs) {

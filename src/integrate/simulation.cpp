@@ -307,6 +307,15 @@ SimulationStart initial_state(const System& system,
   }
   start.q.resize(static_cast<Eigen::Index>(n));
   start.qdot.resize(static_cast<Eigen::Index>(n));
+  // given in the model (a System made without a model file gives every value) or with --set
+  const auto given = [](const std::vector<bool>& flags, std::size_t i) {
+    return i >= flags.size() || flags[i];
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    start.q_given.push_back(given(system.initial_value_given, i) || q_override[i].has_value());
+    start.qdot_given.push_back(given(system.initial_rate_given, i) ||
+                               qdot_override[i].has_value());
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const auto I = static_cast<Eigen::Index>(i);
     start.q[I] = q_override[i] ? *q_override[i] : to_double(system.initial_values[i], values);

@@ -95,6 +95,8 @@ System ModelReader::read(const YAML::Node& root) {
   if (root["constraints"]) read_constraints(root["constraints"], system);
   system.initial_values.assign(system.coordinates().size(), 0);
   system.initial_rates.assign(system.coordinates().size(), 0);
+  system.initial_value_given.assign(system.coordinates().size(), false);
+  system.initial_rate_given.assign(system.coordinates().size(), false);
   if (root["initial"]) read_initial(root["initial"], system);
   if (root["simulate"]) read_simulate(root["simulate"], system);
   columns_ = {"t", "energy"};

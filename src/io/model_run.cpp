@@ -111,6 +111,7 @@ void ModelReader::read_initial(const YAML::Node& node, System& system) {
       fail(item.second, "an initial value must be a real number, from numbers and parameters only");
     }
     (is_rate ? system.initial_rates : system.initial_values)[*q] = value;
+    (is_rate ? system.initial_rate_given : system.initial_value_given)[*q] = true;
   }
 }
 

@@ -159,5 +159,40 @@ TEST(HonestSummaries, GimbalLockAtTheStart) {
   EXPECT_EQ(run("check heavy-top --set theta=0.01").status, 0);
 }
 
+// The values given stay; those left out come from the constraints and the summary lists them; given
+// values that violate a constraint are bad input (or, with --project, all are moved as before).
+TEST(HonestSummaries, InitialValuesGivenStay) {
+  const std::string path = temp_path("atwood.yaml");
+  const std::string model =
+      "unidyn: 1\nparameters: {m1: 1, m2: 2, g: 9.81, L: 3}\ncoordinates: [y1, y2]\nparticles:\n"
+      "  P1: {mass: m1, position: [0, y1, 0]}\n  P2: {mass: m2, position: [1, y2, 0]}\n"
+      "forces:\n  - gravity: -g*E2\nconstraints:\n  - {name: string, position: -y1 - y2 - L}\n";
+  write_file(path, model + "initial: {y1: -1, der(y1): 0.5}\n");
+  const std::string csv = temp_path("atwood.csv");
+  const Outcome r = run("simulate '" + path + "' --set y1=-0.9 --t-end 0.1 -o '" + csv + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.out,
+                       "initial values computed from the constraints: y2 = -2.1, "
+                       "der(y2) = -0.5"))
+      << r.out;
+  const Csv rows = parse_csv(read_file(csv));
+  EXPECT_EQ(rows.at(0, "y1"), -0.9);
+  EXPECT_EQ(rows.at(0, "der(y1)"), 0.5);
+  // both given, and --set makes them disagree
+  write_file(path, model + "initial: {y1: -1, y2: -2}\n");
+  const Outcome conflict = run("simulate '" + path + "' --set y1=-0.9 -o /dev/null");
+  expect_bad_input(conflict, "conflict");
+  EXPECT_TRUE(contains(conflict.err,
+                       "constraint 'string' (Psi = -0.1, coordinates y1 (given), "
+                       "y2 (given))"))
+      << conflict.err;
+  const Outcome check = run("check '" + path + "' --set y1=-0.9");
+  EXPECT_EQ(check.status, 1) << check.out;
+  EXPECT_TRUE(contains(check.out, "check FAILED")) << check.out;
+  const Outcome projected = run("simulate '" + path + "' --set y1=-0.9 --project -o /dev/null");
+  EXPECT_EQ(projected.status, 0) << projected.err;
+  EXPECT_TRUE(contains(projected.out, "the initial state was moved by")) << projected.out;
+}
+
 }  // namespace
 }  // namespace unidyn

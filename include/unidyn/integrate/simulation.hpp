@@ -37,6 +37,10 @@ struct SimulationStart {
   Eigen::VectorXd q;
   Eigen::VectorXd qdot;
   double t0 = 0.0;
+  // Which values were given (in initial: or with --set); the others may be computed from the
+  // constraints (integrate/initial_state.hpp).
+  std::vector<bool> q_given;
+  std::vector<bool> qdot_given;
 };
 
 struct SimulationSummary {

@@ -165,6 +165,9 @@ struct System {
   // Initial q and der(q) per coordinate, expressions in the parameters (0 when absent).
   std::vector<Expr> initial_values;
   std::vector<Expr> initial_rates;
+  // Which of them the model gives (the others are computed from the constraints, from 0).
+  std::vector<bool> initial_value_given;
+  std::vector<bool> initial_rate_given;
   SimulationSettings simulate;
   std::vector<Output> outputs;
   std::vector<Output> conserved;

@@ -1,0 +1,35 @@
+// The initial state that keeps what the user gave and computes the rest: the coordinates and
+// rates given (in `initial:` or with --set) are fixed; those left out are solved for from the
+// constraints that hold at the start — Newton's method on Ψ(q) = 0 over the free coordinates, then
+// the linear system A q̇ + e = 0 (Ψ̇ = 0 for position constraints) over the free rates. Each step
+// takes the least-norm correction, so a free value that no constraint needs keeps its value (0
+// when the model does not give it). Unilateral contacts are not solved for; one that starts inside
+// (Ψ < 0) is refused.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "unidyn/integrate/simulation.hpp"
+#include "unidyn/numeric/compiled_system.hpp"
+
+namespace unidyn {
+
+// Residuals of the constraints at the initial state beyond this are violations (model units).
+inline constexpr double kInitialStateTolerance = 1e-10;
+
+// The given values violate a constraint, or leave too few free values to satisfy it: bad input.
+class InitialStateError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// Completes `start` (its q_given and qdot_given say what is fixed). Returns what was computed, one
+// "name = value" each (coordinates, then rates), in the order of the coordinates. Throws
+// InitialStateError naming the constraint, its residual and the coordinates it involves.
+std::vector<std::string> complete_initial_state(const System& system,
+                                                const CompiledSystem& compiled,
+                                                SimulationStart& start);
+
+}  // namespace unidyn

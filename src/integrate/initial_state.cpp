@@ -1,0 +1,161 @@
+// Completing the initial state from the constraints: Newton on the free coordinates, then the
+// free rates, each least-norm.
+#include "unidyn/integrate/initial_state.hpp"
+
+#include <Eigen/QR>
+#include <cmath>
+#include <sstream>
+
+namespace unidyn {
+namespace {
+
+std::string number(double x) {
+  std::ostringstream text;
+  text.precision(12);
+  text << x;
+  return text.str();
+}
+
+// The coordinates that constraint row k involves (non-zero entries of its row of A), with a mark
+// on those given.
+std::string involved(const System& system, const Eigen::MatrixXd& A, Eigen::Index k,
+                     const std::vector<bool>& given, const char* prefix, const char* suffix) {
+  std::string list;
+  for (Eigen::Index j = 0; j < A.cols(); ++j) {
+    if (A(k, j) == 0.0) continue;
+    list += (list.empty() ? "" : ", ") + std::string(prefix) +
+            system.coordinates()[static_cast<std::size_t>(j)].name + suffix +
+            (given[static_cast<std::size_t>(j)] ? " (given)" : "");
+  }
+  return list.empty() ? "none" : list;
+}
+
+// The indices where flags are false.
+std::vector<Eigen::Index> free_indices(const std::vector<bool>& given) {
+  std::vector<Eigen::Index> free;
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    if (!given[i]) free.push_back(static_cast<Eigen::Index>(i));
+  }
+  return free;
+}
+
+// The worst row of `residual` over `rows`: its index and |value|.
+std::pair<Eigen::Index, double> worst(const Eigen::VectorXd& residual,
+                                      const std::vector<Eigen::Index>& rows) {
+  std::pair<Eigen::Index, double> w{-1, 0.0};
+  for (const Eigen::Index k : rows) {
+    if (std::abs(residual[k]) > w.second) w = {k, std::abs(residual[k])};
+  }
+  return w;
+}
+
+}  // namespace
+
+std::vector<std::string> complete_initial_state(const System& system,
+                                                const CompiledSystem& compiled,
+                                                SimulationStart& start) {
+  std::vector<std::string> computed;
+  const std::size_t m = compiled.constraint_count();
+  if (m == 0) return computed;
+  const std::span<const double> p(start.parameters);
+  CompiledSystemData data = compiled.make_data();
+  const Eigen::VectorXd q_given_values = start.q;
+  compiled.constraints(start.t0, start.q, start.qdot, p, data);
+
+  // The rows that hold: the bilateral position constraints (for q), and every bilateral one
+  // (for q̇); a unilateral contact must not start inside.
+  std::vector<Eigen::Index> position_rows, rows;
+  for (std::size_t k = 0; k < m; ++k) {
+    const auto K = static_cast<Eigen::Index>(k);
+    if (system.constraints[k].unilateral) continue;
+    rows.push_back(K);
+    if (compiled.is_position_constraint()[k]) position_rows.push_back(K);
+  }
+
+  // Positions: Newton's method on Ψ_P(q) = 0 over the free coordinates, least-norm steps.
+  const std::vector<Eigen::Index> free_q = free_indices(start.q_given);
+  const auto position_failure = [&](const std::string& why) {
+    const auto [k, r] = worst(data.constraint_position, position_rows);
+    throw InitialStateError("the initial state cannot satisfy constraint '" +
+                            system.constraints[static_cast<std::size_t>(k)].name +
+                            "' (Psi = " + number(data.constraint_position[k]) + ", coordinates " +
+                            involved(system, data.constraint_matrix, k, start.q_given, "", "") +
+                            "): " + why);
+  };
+  for (int iteration = 0;; ++iteration) {
+    const double residual = worst(data.constraint_position, position_rows).second;
+    if (residual <= 1e-14 * (1.0 + start.q.cwiseAbs().maxCoeff())) break;
+    if (free_q.empty()) {
+      if (residual <= kInitialStateTolerance) break;  // round-off of typed values
+      position_failure(
+          "the values given violate it; leave a coordinate it involves out of "
+          "initial: (and --set) to have it computed, or use --project");
+    }
+    if (iteration == 50) {
+      if (residual <= kInitialStateTolerance) break;
+      position_failure("Newton's method over the coordinates not given does not converge");
+    }
+    const Eigen::MatrixXd J = data.constraint_matrix(position_rows, free_q);
+    const Eigen::VectorXd psi = data.constraint_position(position_rows);
+    const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition(J);
+    const Eigen::VectorXd step = decomposition.solve(psi);
+    if (!step.allFinite() || step.norm() == 0.0) {
+      if (residual <= kInitialStateTolerance) break;
+      position_failure(
+          "the coordinates not given cannot change it here (its gradient in them "
+          "is 0); give them values");
+    }
+    for (std::size_t j = 0; j < free_q.size(); ++j) {
+      start.q[free_q[j]] -= step[static_cast<Eigen::Index>(j)];
+    }
+    compiled.constraints(start.t0, start.q, start.qdot, p, data);
+  }
+
+  // Rates: A_R q̇ + e_R = 0 over the free rates, least norm.
+  const std::vector<Eigen::Index> free_v = free_indices(start.qdot_given);
+  Eigen::VectorXd velocity = data.constraint_matrix * start.qdot + data.constraint_velocity_term;
+  const double scale = 1.0 + start.qdot.cwiseAbs().maxCoeff();
+  // (a residual at round-off needs no correction)
+  if (!free_v.empty() && worst(velocity, rows).second > 1e-14 * scale) {
+    const Eigen::MatrixXd A = data.constraint_matrix(rows, free_v);
+    const Eigen::VectorXd step =
+        Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(A).solve(velocity(rows));
+    for (std::size_t j = 0; j < free_v.size(); ++j) {
+      start.qdot[free_v[j]] -= step[static_cast<Eigen::Index>(j)];
+    }
+    velocity = data.constraint_matrix * start.qdot + data.constraint_velocity_term;
+  }
+  if (const auto [k, r] = worst(velocity, rows); r > kInitialStateTolerance * scale) {
+    throw InitialStateError(
+        "the initial rates cannot satisfy constraint '" +
+        system.constraints[static_cast<std::size_t>(k)].name +
+        "' (A q' + e = " + number(velocity[k]) + ", rates " +
+        involved(system, data.constraint_matrix, k, start.qdot_given, "der(", ")") +
+        "): the rates given violate it; leave one of them out of initial: (and --set) to have it "
+        "computed, or use --project");
+  }
+
+  // Unilateral contacts: apart or touching, not inside.
+  for (std::size_t k = 0; k < m; ++k) {
+    const auto K = static_cast<Eigen::Index>(k);
+    if (!system.constraints[k].unilateral) continue;
+    if (data.constraint_position[K] < -kInitialStateTolerance) {
+      throw InitialStateError(
+          "the initial state is inside the unilateral contact '" + system.constraints[k].name +
+          "' (Psi = " + number(data.constraint_position[K]) + " < 0): start it apart or touching");
+    }
+  }
+
+  // What was computed.
+  const auto& q = system.coordinates();
+  for (const Eigen::Index j : free_q) {
+    if (start.q[j] != q_given_values[j]) computed.push_back(q[j].name + " = " + number(start.q[j]));
+  }
+  for (const Eigen::Index j : free_v) {
+    if (start.qdot[j] != 0.0)
+      computed.push_back("der(" + q[j].name + ") = " + number(start.qdot[j]));
+  }
+  return computed;
+}
+
+}  // namespace unidyn

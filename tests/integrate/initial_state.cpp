@@ -1,0 +1,121 @@
+// The initial state: the values given stay as given, the others come from the constraints
+// (Newton on Ψ = 0, then A q̇ + e = 0, least norm) — the Atwood machine's second mass, a rolling
+// sphere's spin from its forward speed — and given values that violate a constraint, or leave
+// nothing free to satisfy it, are refused with the constraint, its residual and its coordinates.
+#include "unidyn/integrate/initial_state.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "unidyn/equations/lagrange.hpp"
+#include "unidyn/io/model_file.hpp"
+
+namespace unidyn {
+namespace {
+
+struct Completed {
+  SimulationStart start;
+  std::vector<std::string> computed;
+};
+
+// Reads `text`, starts it with `sets`, and completes the start.
+Completed complete(const std::string& text,
+                   const std::vector<std::pair<std::string, double>>& sets = {}) {
+  const System system = parse_model(text, "initial.yaml");
+  const CompiledSystem compiled(system, lagrange_equations(system));
+  Completed c{initial_state(system, sets), {}};
+  c.computed = complete_initial_state(system, compiled, c.start);
+  return c;
+}
+
+std::string error_of(const std::string& text,
+                     const std::vector<std::pair<std::string, double>>& sets = {}) {
+  try {
+    (void)complete(text, sets);
+  } catch (const InitialStateError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no error";
+  return "";
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// Two masses on a string over a pulley: y1 + y2 = −L.
+std::string atwood(const std::string& initial) {
+  return "unidyn: 1\nparameters: {m1: 1, m2: 2, g: 9.81, L: 3}\ncoordinates: [y1, y2]\n"
+         "particles:\n  P1: {mass: m1, position: [0, y1, 0]}\n  P2: {mass: m2, position: [1, y2, "
+         "0]}\nforces:\n  - gravity: -g*E2\nconstraints:\n  - {name: string, position: -y1 - y2 - "
+         "L}\ninitial: " +
+         initial + "\n";
+}
+
+TEST(InitialState, TheValuesGivenStayTheOthersAreComputed) {
+  const Completed c = complete(atwood("{y1: -1, der(y1): 0.5}"), {{"y1", -0.9}});
+  EXPECT_EQ(c.start.q[0], -0.9);  // as given with --set, not moved
+  EXPECT_DOUBLE_EQ(c.start.q[1], -2.1);
+  EXPECT_EQ(c.start.qdot[0], 0.5);
+  EXPECT_DOUBLE_EQ(c.start.qdot[1], -0.5);
+  ASSERT_EQ(c.computed.size(), 2u);
+  EXPECT_EQ(c.computed[0], "y2 = -2.1");
+  EXPECT_EQ(c.computed[1], "der(y2) = -0.5");
+  // nothing to compute when everything given is consistent
+  EXPECT_TRUE(complete(atwood("{y1: -1, y2: -2}")).computed.empty());
+}
+
+TEST(InitialState, GivenValuesThatViolateAConstraintAreRefused) {
+  const std::string message = error_of(atwood("{y1: -1, y2: -2}"), {{"y1", -0.9}});
+  EXPECT_TRUE(contains(message, "constraint 'string'")) << message;
+  EXPECT_TRUE(contains(message, "Psi = -0.1")) << message;
+  EXPECT_TRUE(contains(message, "y1 (given), y2 (given)")) << message;
+  const std::string rates = error_of(atwood("{y1: -1, der(y1): 1, der(y2): 1}"));
+  EXPECT_TRUE(contains(rates, "A q' + e = -2")) << rates;
+  EXPECT_TRUE(contains(rates, "der(y1) (given), der(y2) (given)")) << rates;
+}
+
+// x = 100 on a unit circle: no y can satisfy it (no "success" with |Ψ| = 10⁴ in the first row).
+// x = 0.6 with y from 0: ∂Ψ/∂y = 2y is 0 there, so y must be given.
+TEST(InitialState, NoFreeValueCanSatisfyIt) {
+  const std::string circle =
+      "unidyn: 1\ncoordinates: [x, y]\nparticles:\n  P: {mass: 1, position: [x, y, 0]}\n"
+      "constraints:\n  - {name: rod, position: x^2 + y^2 - 1}\ninitial: ";
+  EXPECT_TRUE(contains(error_of(circle + "{x: 100, y: -1}"), "'rod'"));
+  const std::string far = error_of(circle + "{x: 100}");
+  EXPECT_TRUE(contains(far, "constraint 'rod'")) << far;
+  const std::string flat = error_of(circle + "{x: 0.6}");
+  EXPECT_TRUE(contains(flat, "give them values")) << flat;
+  // y alone: x = ±0.6, but from x = 0 the gradient 2x is 0 as well: x must be given
+  EXPECT_TRUE(contains(error_of(circle + "{y: -0.8}"), "give them values"));
+}
+
+// A sphere rolling on a plane (Euler parameters): given its forward speed, its spin follows from
+// the rolling constraints: ω2 = v/R, e2' = ω2/2 at the identity; nothing else moves.
+TEST(InitialState, ARollingSpheresSpinFromItsSpeed) {
+  const std::string sphere =
+      "unidyn: 1\nparameters: {m: 1, g: 9.81, R: 0.1}\ncoordinates: [x1, x2, x3, e0, e1, e2, e3]\n"
+      "bodies:\n  ball:\n    mass: m\n    inertia: {sphere: {radius: R}}\n    rotation: "
+      "{quaternion: [e0, e1, e2, e3]}\n    center: [x1, x2, x3]\nforces:\n  - gravity: -g*E3\n"
+      "constraints:\n  - {name: plane, position: x3 - R}\n"
+      "  - {name: roll1, velocity: \"dot(ball.velocity + cross(ball.omega, -R*E3), E1)\"}\n"
+      "  - {name: roll2, velocity: \"dot(ball.velocity + cross(ball.omega, -R*E3), E2)\"}\n"
+      "initial: {e0: 1, der(x1): 2}\n";
+  const Completed c = complete(sphere);
+  EXPECT_DOUBLE_EQ(c.start.q[2], 0.1);  // x3 = R, from the plane
+  EXPECT_EQ(c.start.qdot[0], 2.0);
+  EXPECT_NEAR(c.start.qdot[5], 2.0 / 0.1 / 2, 1e-14);  // e2' = ω2 / 2
+  for (const int i : {1, 2, 3, 4, 6}) EXPECT_NEAR(c.start.qdot[i], 0.0, 1e-15) << i;
+}
+
+TEST(InitialState, AUnilateralContactMustNotStartInside) {
+  const std::string ball =
+      "unidyn: 1\ncoordinates: [z]\nparticles:\n  P: {mass: 1, position: [0, 0, z]}\n"
+      "constraints:\n  - {name: floor, position: z, unilateral: true}\ninitial: {z: -0.5}\n";
+  EXPECT_TRUE(contains(error_of(ball), "inside the unilateral contact 'floor'"));
+}
+
+}  // namespace
+}  // namespace unidyn
