@@ -313,8 +313,7 @@ SimulationStart initial_state(const System& system,
   };
   for (std::size_t i = 0; i < n; ++i) {
     start.q_given.push_back(given(system.initial_value_given, i) || q_override[i].has_value());
-    start.qdot_given.push_back(given(system.initial_rate_given, i) ||
-                               qdot_override[i].has_value());
+    start.qdot_given.push_back(given(system.initial_rate_given, i) || qdot_override[i].has_value());
   }
   for (std::size_t i = 0; i < n; ++i) {
     const auto I = static_cast<Eigen::Index>(i);
