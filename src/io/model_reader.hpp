@@ -124,6 +124,18 @@ class ModelReader {
                          s.where);
   }
 
+  // A scalar or a vector, whichever the expression is.
+  Value any_expr(const YAML::Node& node, const Scope& scope, const std::string& what) const {
+    const ScalarText s = scalar_text(node, what);
+    Value value = hint_commas(s, [&] { return parse_expression(s.text, scope, s.where); });
+    if (value.is_vector()) {
+      within_budget(value.vector, s.where);
+    } else {
+      within_budget(value.scalar, s.where);
+    }
+    return value;
+  }
+
   // A YAML flow collection ({..} or [..]) splits an unquoted expression at its commas, leaving
   // unbalanced brackets: say so when such a piece does not parse.
   static bool unbalanced(std::string_view text) {

@@ -145,11 +145,22 @@ std::vector<Output> ModelReader::read_outputs(const YAML::Node& node, const Syst
   std::vector<Output> outputs;
   for (const auto& item : node) {
     const std::string name = printable_name(item.first, "a name in " + what, true);
-    // one CSV column each: not t, q, der(q), energy, lambda(c), nor another output's name
-    if (!columns_.insert(name).second) {
-      fail(item.first, "'" + name + "' is already the name of a CSV column");
+    // a scalar is one column; a vector three, name.x, name.y, name.z (components on E1, E2, E3)
+    const Value value = item.second.IsSequence() ? Value::of(vector_expr(item.second, scope, name))
+                                                 : any_expr(item.second, scope, name);
+    std::vector<std::pair<std::string, Expr>> columns;
+    if (value.is_vector()) {
+      for (int i = 0; i < 3; ++i) columns.emplace_back(name + "." + "xyz"[i], value.vector[i]);
+    } else {
+      columns.emplace_back(name, value.scalar);
     }
-    outputs.push_back({name, scalar_expr(item.second, scope, name), at(item.first)});
+    for (auto& [column, expression] : columns) {
+      // one CSV column each: not t, q, der(q), energy, lambda(c), nor another output's name
+      if (!columns_.insert(column).second) {
+        fail(item.first, "'" + column + "' is already the name of a CSV column");
+      }
+      outputs.push_back({column, expression, at(item.first)});
+    }
   }
   return outputs;
 }
