@@ -8,6 +8,7 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -293,6 +294,30 @@ SimulationOptions options_for(const System& system, const ModelCommands& c) {
   return o;
 }
 
+// SIGINT (Ctrl-C) while a simulation runs: noted, so that the run ends at the next row with its
+// rows and summary; a second one ends the process at once. Not caught when it was ignored (a
+// background job, nohup).
+volatile std::sig_atomic_t g_interrupted = 0;
+extern "C" void on_interrupt(int) {
+  g_interrupted = 1;
+  std::signal(SIGINT, SIG_DFL);
+}
+class InterruptWatch {
+ public:
+  InterruptWatch() {
+    g_interrupted = 0;
+    previous_ = std::signal(SIGINT, on_interrupt);
+    if (previous_ == SIG_IGN) std::signal(SIGINT, SIG_IGN);
+  }
+  ~InterruptWatch() { std::signal(SIGINT, previous_ == SIG_IGN ? SIG_IGN : SIG_DFL); }
+  InterruptWatch(const InterruptWatch&) = delete;
+  InterruptWatch& operator=(const InterruptWatch&) = delete;
+  bool requested() const { return g_interrupted != 0; }
+
+ private:
+  void (*previous_)(int) = SIG_DFL;
+};
+
 // The summary's figures of the rows: energy, constraint residuals and each multiplier's range,
 // the initial projection, gimbal lock, conserved quantities.
 void write_run_figures(std::FILE* out, const System& system, const SimulationSummary& s) {
@@ -360,8 +385,15 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
   }
   csv->header(simulation_columns(system));
   const auto run_start = std::chrono::steady_clock::now();
-  const SimulationSummary s = simulate(system, compiled, start, options,
-                                       [&](const std::vector<double>& row) { csv->row(row); });
+  // Ctrl-C ends the run after the row being written, with the rows kept and the summary
+  const InterruptWatch interrupt;
+  const SimulationSummary s =
+      simulate(system, compiled, start, options, [&](const std::vector<double>& row) {
+        if (interrupt.requested()) {
+          throw std::runtime_error("interrupted (Ctrl-C)");
+        }
+        csv->row(row);
+      });
   const double run_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
   std::string close_error;
@@ -374,11 +406,16 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
   // The summary goes to standard error when the CSV takes standard output.
   std::FILE* out = path == "-" ? stderr : stdout;
   fmt::print(out, "{}: {} from t = 0 to {} ({}), {} rows{}\n", system.name,
-             s.ok ? (s.stopped ? "simulated until stop_when" : "simulated") : "FAILED",
+             s.ok                    ? (s.stopped ? "simulated until stop_when" : "simulated")
+             : interrupt.requested() ? "INTERRUPTED"
+                                     : "FAILED",
              options.t_end, options.method, s.rows,
              path == "-" ? "" : " written to " + printable(path));
-  if (!s.ok)
+  if (interrupt.requested()) {
+    fmt::print(out, "  interrupted at t = {:.10g}\n", s.failure_time);
+  } else if (!s.ok) {
     fmt::print(out, "  stopped at t = {:.10g}: {}\n", s.failure_time, printable(s.message));
+  }
   if (!close_error.empty()) fmt::print(out, "  FAILED at the end: {}\n", printable(close_error));
   fmt::print(out,
              "  derive + compile {:.3f} s, integrate {:.3f} s; {} steps ({} rejected), {} "
@@ -399,6 +436,7 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
     if (&phase == &s.phases.front()) fmt::print(out, "  phases and events:\n");
     fmt::print(out, "    t = {:.12g}: {}\n", phase.t, printable(phase.what));
   }
+  if (interrupt.requested()) return 130;  // as a shell reports a command ended by SIGINT
   return s.ok && close_error.empty() ? 0 : 1;
 }
 
