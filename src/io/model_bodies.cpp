@@ -222,4 +222,24 @@ void ModelReader::add_unit_norm_constraint(const YAML::Node& node, const std::st
        0});
 }
 
+// definitions: name: expression, in order; each may use the parameters, coordinates, particles,
+// bodies and the definitions before it, and every expression read after it may use it.
+void ModelReader::read_definitions(const YAML::Node& node, System& system) {
+  expect_map(node, "definitions");
+  expect_unique_keys(node);
+  for (const auto& item : node) {
+    const std::string name = new_name(item.first, system, "definition");
+    const SystemScope scope(system);
+    const Value value = item.second.IsSequence() ? Value::of(vector_expr(item.second, scope, name))
+                                                 : any_expr(item.second, scope, name);
+    Definition definition{name, value.is_vector(), 0, {}, at(item.first)};
+    if (value.is_vector()) {
+      definition.vector = value.vector;
+    } else {
+      definition.scalar = value.scalar;
+    }
+    system.definitions.push_back(std::move(definition));
+  }
+}
+
 }  // namespace unidyn::model_reading

@@ -73,7 +73,7 @@ System ModelReader::read(const YAML::Node& root) {
   expect_keys(root,
               {"unidyn", "name", "description", "reference", "parameters", "coordinates",
                "particles", "bodies", "forces", "constraints", "initial", "simulate", "outputs",
-               "conserved", "stop_when"},
+               "conserved", "stop_when", "definitions"},
               "the model");
   if (!root["unidyn"]) throw ModelError(at(root), "missing 'unidyn: 1' (the model format version)");
   if (scalar(root["unidyn"], "unidyn") != "1")
@@ -91,6 +91,7 @@ System ModelReader::read(const YAML::Node& root) {
     throw ModelError(at(root), "the model has no particles and no bodies");
   }
   expect_every_coordinate_moves(system);
+  if (root["definitions"]) read_definitions(root["definitions"], system);
   if (root["forces"]) read_forces(root["forces"], system);
   if (root["constraints"]) read_constraints(root["constraints"], system);
   system.initial_values.assign(system.coordinates().size(), 0);

@@ -233,7 +233,7 @@ class ModelReader {
     if (!valid) fail(node, what + " '" + name + "' is not a valid name (letters, digits, _)");
     if (reserved.count(name)) fail(node, what + " '" + name + "' is a reserved word");
     if (system.find_parameter(name) || system.find_coordinate(name) || system.find_particle(name) ||
-        system.find_body(name)) {
+        system.find_body(name) || system.find_definition(name)) {
       fail(node, "'" + name + "' is already defined");
     }
     return name;
@@ -247,6 +247,7 @@ class ModelReader {
   std::optional<EulerChart> euler_chart(const YAML::Node& node, const System& system);
   void add_unit_norm_constraint(const YAML::Node& node, const std::string& body, System& system);
   GiNaC::matrix inertia(const YAML::Node& node, const System& system);
+  void read_definitions(const YAML::Node& node, System& system);
   void read_forces(const YAML::Node& node, System& system);
   ForcePoint force_point(const YAML::Node& node, const System& system, const Scope& scope);
   void read_constraints(const YAML::Node& node, System& system);

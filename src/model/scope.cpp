@@ -11,6 +11,10 @@ std::optional<Value> SystemScope::lookup(std::string_view name) const {
   if (const auto q = system_.find_coordinate(key)) {
     return Value::of(system_.coordinates()[*q].value);
   }
+  if (const auto d = system_.find_definition(key)) {
+    const Definition& definition = system_.definitions[*d];
+    return definition.is_vector ? Value::of(definition.vector) : Value::of(definition.scalar);
+  }
   // Members: P.position, P.velocity, P.acceleration, P.mass of a particle; c.lambda of a
   // constraint.
   const std::size_t dot = key.find('.');
@@ -77,6 +81,7 @@ std::vector<std::string> SystemScope::names() const {
   for (const auto& [name, value] : extra_) all.push_back(name);
   for (const auto& p : system_.parameters) all.push_back(p.name);
   for (const auto& q : system_.coordinates()) all.push_back(q.name);
+  for (const auto& d : system_.definitions) all.push_back(d.name);
   for (const auto& c : system_.constraints) all.push_back(c.name + ".lambda");
   for (const auto& b : system_.bodies) {
     for (const char* member : {".e1", ".e2", ".e3", ".center", ".velocity", ".omega", ".H", ".mass",

@@ -32,6 +32,10 @@ std::optional<std::size_t> System::find_body(const std::string& wanted) const {
   return find_by_name(bodies, wanted);
 }
 
+std::optional<std::size_t> System::find_definition(const std::string& wanted) const {
+  return find_by_name(definitions, wanted);
+}
+
 VectorExpr System::angular_velocity(std::size_t b) const {
   const TensorExpr& Q = bodies[b].rotation;
   if (const auto cached = angular_velocity_cache_.find(b);

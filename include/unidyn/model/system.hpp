@@ -153,6 +153,16 @@ struct SimulationSettings {
   double step = 0.0;  // fixed step of rk4; 0 means output_step / 10
 };
 
+// A named sub-expression of the model (`definitions:`), a scalar or a vector, usable in every
+// expression read after it.
+struct Definition {
+  std::string name;
+  bool is_vector = false;
+  Expr scalar = 0;
+  VectorExpr vector;
+  SourcePosition where;
+};
+
 struct System {
   std::string name;
   std::string source;  // the model file
@@ -171,6 +181,7 @@ struct System {
   SimulationSettings simulate;
   std::vector<Output> outputs;
   std::vector<Output> conserved;
+  std::vector<Definition> definitions;
   // The run stops when one of these, non-zero at the start, reaches 0.
   std::vector<Output> stop_when;
   // The model's expression with the largest power of a sum once expanded (largest_power_terms),
@@ -185,6 +196,7 @@ struct System {
   std::optional<std::size_t> find_coordinate(const std::string& name) const;
   std::optional<std::size_t> find_particle(const std::string& name) const;
   std::optional<std::size_t> find_body(const std::string& name) const;
+  std::optional<std::size_t> find_definition(const std::string& name) const;
 
   // v = dr/dt of particle p (1.7).
   VectorExpr velocity(std::size_t p) const;
