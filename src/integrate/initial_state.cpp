@@ -6,6 +6,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "unidyn/symbolic/real_value.hpp"
+
 namespace unidyn {
 namespace {
 
@@ -50,6 +52,52 @@ std::pair<Eigen::Index, double> worst(const Eigen::VectorXd& residual,
 }
 
 }  // namespace
+
+void apply_initial_angular_velocities(const System& system, SimulationStart& start) {
+  if (system.initial_omegas.empty()) return;
+  // the state: parameters, t0, q; rates 0 (ω is linear in them)
+  GiNaC::exmap state;
+  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
+    state[system.parameters[k].symbol] = start.parameters[k];
+  }
+  state[system.time()] = start.t0;
+  const auto& q = system.coordinates();
+  for (std::size_t j = 0; j < q.size(); ++j) {
+    state[q[j].value] = start.q[static_cast<Eigen::Index>(j)];
+    state[q[j].rate] = 0;
+  }
+  const auto value = [&](const Expr& e, const std::string& body) {
+    const auto v = real_value(e, state);
+    if (!v) throw InitialStateError("cannot evaluate the angular velocity of '" + body + "'");
+    return *v;
+  };
+  for (const InitialOmega& given : system.initial_omegas) {
+    const Body& body = system.bodies[given.body];
+    const VectorExpr w = given.body_frame ? system.body_angular_velocity(given.body)
+                                          : system.angular_velocity(given.body);
+    const auto n = static_cast<Eigen::Index>(given.coordinates.size());
+    Eigen::MatrixXd W(3, n);
+    Eigen::Vector3d target;
+    for (int i = 0; i < 3; ++i) {
+      for (Eigen::Index j = 0; j < n; ++j) {
+        W(i, j) =
+            value(w[i].diff(q[given.coordinates[static_cast<std::size_t>(j)]].rate), body.name);
+      }
+      target[i] = value(given.omega[i], body.name) - value(w[i], body.name);
+    }
+    const Eigen::VectorXd rates =
+        Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(W).solve(target);
+    if ((W * rates - target).norm() > 1e-10 * (1.0 + target.norm())) {
+      throw InitialStateError("the rates of body '" + body.name +
+                              "' cannot give it the angular velocity asked for at its start (at "
+                              "the gimbal lock of its Euler angles?)");
+    }
+    for (Eigen::Index j = 0; j < n; ++j) {
+      start.qdot[static_cast<Eigen::Index>(given.coordinates[static_cast<std::size_t>(j)])] =
+          rates[j];
+    }
+  }
+}
 
 std::vector<std::string> complete_initial_state(const System& system,
                                                 const CompiledSystem& compiled,

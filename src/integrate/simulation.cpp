@@ -15,6 +15,7 @@
 #include "unidyn/integrate/dormand_prince.hpp"
 #include "unidyn/integrate/driver.hpp"
 #include "unidyn/integrate/friction_phases.hpp"
+#include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/integrate/rattle.hpp"
 #include "unidyn/integrate/rk4.hpp"
 #include "unidyn/rotation/euler_angles.hpp"
@@ -322,6 +323,16 @@ SimulationStart initial_state(const System& system,
         qdot_override[i] ? *qdot_override[i] : to_double(system.initial_rates[i], values);
   }
   expect_no_gimbal_lock(system, start.q);
+  for (const InitialOmega& omega : system.initial_omegas) {
+    for (const std::size_t j : omega.coordinates) {
+      if (qdot_override[j]) {
+        throw std::invalid_argument("--set der(" + system.coordinates()[j].name +
+                                    ") conflicts with the angular velocity of '" +
+                                    system.bodies[omega.body].name + "' given in the model");
+      }
+    }
+  }
+  apply_initial_angular_velocities(system, start);
   return start;
 }
 

@@ -254,6 +254,8 @@ class ModelReader {
   void read_joint(const YAML::Node& spec, const std::string& name, System& system);
   void read_rolling(const YAML::Node& spec, const std::string& name, System& system);
   void read_initial(const YAML::Node& node, System& system);
+  void read_initial_omega(const std::pair<YAML::Node, YAML::Node>& item, const std::string& owner,
+                          const std::string& member, System& system);
   void read_simulate(const YAML::Node& node, System& system);
   std::vector<Output> read_outputs(const YAML::Node& node, const System& system,
                                    const std::string& what);

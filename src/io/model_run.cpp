@@ -94,6 +94,10 @@ void ModelReader::read_initial(const YAML::Node& node, System& system) {
   std::set<std::string> given;
   for (const auto& item : node) {
     std::string key = scalar(item.first, "an initial value's name");
+    if (const std::size_t dot = key.find('.'); dot != std::string::npos) {
+      read_initial_omega(item, key.substr(0, dot), key.substr(dot + 1), system);
+      continue;
+    }
     bool is_rate = false;
     if (key.starts_with("der(") && key.ends_with(")")) {
       key = key.substr(4, key.size() - 5);
@@ -110,9 +114,46 @@ void ModelReader::read_initial(const YAML::Node& node, System& system) {
     if (!real) {
       fail(item.second, "an initial value must be a real number, from numbers and parameters only");
     }
+    if (is_rate && system.initial_rate_given[*q]) {
+      fail(item.first, "der(" + key + ") is given twice (also by a body's omega)");
+    }
     (is_rate ? system.initial_rates : system.initial_values)[*q] = value;
     (is_rate ? system.initial_rate_given : system.initial_value_given)[*q] = true;
   }
+}
+
+// B.omega: [w1, w2, w3] (on E1, E2, E3) or B.omega_body: (on e1, e2, e3): the rates of the
+// coordinates B's angular velocity depends on are then given by it.
+void ModelReader::read_initial_omega(const std::pair<YAML::Node, YAML::Node>& item,
+                                     const std::string& owner, const std::string& member,
+                                     System& system) {
+  const auto b = system.find_body(owner);
+  if (!b || (member != "omega" && member != "omega_body")) {
+    fail(item.first, "'" + owner + "." + member +
+                         "' is not a coordinate, der(coordinate), B.omega or B.omega_body");
+  }
+  InitialOmega omega{*b, member == "omega_body", {}, {}, at(item.first)};
+  omega.omega = vector_expr(item.second, SystemScope(system), member);
+  for (int i = 0; i < 3; ++i) {
+    if (!real_value(omega.omega[i], system.parameter_values())) {
+      fail(item.second,
+           "an angular velocity's components are real numbers, from numbers and "
+           "parameters only");
+    }
+  }
+  const VectorExpr w = system.angular_velocity(*b);
+  const auto& q = system.coordinates();
+  for (std::size_t j = 0; j < q.size(); ++j) {
+    if (!w[0].has(q[j].rate) && !w[1].has(q[j].rate) && !w[2].has(q[j].rate)) continue;
+    if (system.initial_rate_given[j]) {
+      fail(item.first,
+           "der(" + q[j].name + ") is given twice (also by " + owner + "." + member + ")");
+    }
+    system.initial_rate_given[j] = true;
+    omega.coordinates.push_back(j);
+  }
+  if (omega.coordinates.empty()) fail(item.first, "body '" + owner + "' does not turn");
+  system.initial_omegas.push_back(std::move(omega));
 }
 
 void ModelReader::read_simulate(const YAML::Node& node, System& system) {

@@ -11,6 +11,7 @@
 
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/io/model_file.hpp"
+#include "unidyn/rotation/euler_angles.hpp"
 
 namespace unidyn {
 namespace {
@@ -108,6 +109,40 @@ TEST(InitialState, ARollingSpheresSpinFromItsSpeed) {
   EXPECT_EQ(c.start.qdot[0], 2.0);
   EXPECT_NEAR(c.start.qdot[5], 2.0 / 0.1 / 2, 1e-14);  // e2' = ω2 / 2
   for (const int i : {1, 2, 3, 4, 6}) EXPECT_NEAR(c.start.qdot[i], 0.0, 1e-15) << i;
+}
+
+// initial: {B.omega: [..]} gives the rates of B's rotation: for 3-1-3 angles the angle rates of
+// that ω (checked with the rotation layer's own ω of the angles and rates); for Euler parameters,
+// with B.omega_body, rates with e·ė = 0 whose body angular velocity 2 (e0 ė − ė0 e − e × ė) is it.
+TEST(InitialState, AngularVelocityOfABody) {
+  const std::string top =
+      "unidyn: 1\nparameters: {m: 1, w3: 5}\ncoordinates: [psi, theta, phi]\nbodies:\n  top:\n"
+      "    mass: m\n    inertia: [2, 2, 1]\n    rotation: {euler: 3-1-3, angles: [psi, theta, "
+      "phi]}\n    center: [0, 0, 0]\ninitial: {psi: 0.2, theta: 0.3, phi: -0.4, top.omega: [0.1, "
+      "-0.2, w3]}\n";
+  const Completed c = complete(top);
+  const Vec3 w = angular_velocity(EulerSet{3, 1, 3}, Vec3(0.2, 0.3, -0.4),
+                                  Vec3(c.start.qdot[0], c.start.qdot[1], c.start.qdot[2]));
+  EXPECT_NEAR(w.x(), 0.1, 1e-14);
+  EXPECT_NEAR(w.y(), -0.2, 1e-14);
+  EXPECT_NEAR(w.z(), 5.0, 1e-14);
+  // and der(psi) cannot be given besides
+  EXPECT_THROW((void)parse_model(top + "  der(psi): 1\n", "omega.yaml"), ModelError);
+
+  const std::string ball =
+      "unidyn: 1\ncoordinates: [e0, e1, e2, e3]\nbodies:\n  B:\n    mass: 1\n    inertia: [1, "
+      "2, 3]\n    rotation: {quaternion: [e0, e1, e2, e3]}\n    center: [0, 0, 0]\n"
+      "initial: {e0: 0.5, e1: 0.5, e2: 0.5, e3: 0.5, B.omega_body: [1, 2, 3]}\n";
+  const Completed b = complete(ball);
+  const double e0 = 0.5;
+  const Eigen::Vector3d e(0.5, 0.5, 0.5);
+  const double de0 = b.start.qdot[0];
+  const Eigen::Vector3d de(b.start.qdot[1], b.start.qdot[2], b.start.qdot[3]);
+  EXPECT_NEAR(e0 * de0 + e.dot(de), 0.0, 1e-14);
+  const Eigen::Vector3d body = 2 * (e0 * de - de0 * e - e.cross(de));
+  EXPECT_NEAR(body.x(), 1.0, 1e-13);
+  EXPECT_NEAR(body.y(), 2.0, 1e-13);
+  EXPECT_NEAR(body.z(), 3.0, 1e-13);
 }
 
 TEST(InitialState, AUnilateralContactMustNotStartInside) {

@@ -25,6 +25,12 @@ class InitialStateError : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+// The rates that give each body listed in `initial:` as B.omega (or B.omega_body) its angular
+// velocity at the start: ω = W(q) q̇ solved for the rates of the coordinates of its rotation at the
+// initial coordinates (least norm: for Euler parameters the rate keeps e·ė = 0). Throws
+// InitialStateError where W cannot give it (Euler angles at gimbal lock).
+void apply_initial_angular_velocities(const System& system, SimulationStart& start);
+
 // Completes `start` (its q_given and qdot_given say what is fixed). Returns what was computed, one
 // "name = value" each (coordinates, then rates), in the order of the coordinates. Throws
 // InitialStateError naming the constraint, its residual and the coordinates it involves.

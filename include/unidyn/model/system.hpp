@@ -163,6 +163,16 @@ struct Definition {
   SourcePosition where;
 };
 
+// `initial: {B.omega: [..]}` (or B.omega_body: components on the body's basis): the body's
+// angular velocity at the start, turned into the rates of the coordinates of its rotation.
+struct InitialOmega {
+  std::size_t body;
+  bool body_frame = false;
+  VectorExpr omega;                      // numbers and parameters
+  std::vector<std::size_t> coordinates;  // whose rates it gives
+  SourcePosition where;
+};
+
 struct System {
   std::string name;
   std::string source;  // the model file
@@ -178,6 +188,7 @@ struct System {
   // Which of them the model gives (the others are computed from the constraints, from 0).
   std::vector<bool> initial_value_given;
   std::vector<bool> initial_rate_given;
+  std::vector<InitialOmega> initial_omegas;
   SimulationSettings simulate;
   std::vector<Output> outputs;
   std::vector<Output> conserved;
