@@ -115,12 +115,13 @@ std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::st
 struct CommandModel {
   System system;
   std::string text;
+  std::string path;
 };
 CommandModel read_command_model(const ModelCommands& c) {
   const std::string path = resolve_model(c.model);
   std::string text = read_model_text(path);
   System system = parse_model(text, path);
-  return {std::move(system), std::move(text)};
+  return {std::move(system), std::move(text), path};
 }
 
 // With --reduced, the model's approach-II form (the notes on what was eliminated go to standard
@@ -364,8 +365,10 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
   const auto clock_start = std::chrono::steady_clock::now();
   CompileOptions compile_options;
   compile_options.native = c.evaluation == "native";
-  // the cache of native code is keyed by the bytes that were parsed (and how they were reduced)
-  compile_options.native_options.key = std::string(c.reduced ? "reduced\n" : "full\n") + model.text;
+  // the cache of native code is keyed by what determines the code in the bytes that were parsed
+  // (not their comments, initial: or simulate:), and how they were reduced
+  compile_options.native_options.key =
+      std::string(c.reduced ? "reduced\n" : "full\n") + model_code_text(model.text, model.path);
   // the numerics take M and f through partial velocities: the same equations as Lagrange's
   // (tested on every bundled model), derived faster and with fewer operations
   const CompiledSystem compiled(system, kane_equations(system), compile_options);

@@ -138,6 +138,50 @@ System parse_model(const std::string& text, const std::string& file) {
   }
 }
 
+namespace {
+
+// A deep copy of a YAML node with every collection in block style: one layout for one content.
+YAML::Node in_block_style(const YAML::Node& node) {
+  if (node.IsMap()) {
+    YAML::Node copy(YAML::NodeType::Map);
+    for (const auto& item : node) copy[in_block_style(item.first)] = in_block_style(item.second);
+    copy.SetStyle(YAML::EmitterStyle::Block);
+    return copy;
+  }
+  if (node.IsSequence()) {
+    YAML::Node copy(YAML::NodeType::Sequence);
+    for (const auto& element : node) copy.push_back(in_block_style(element));
+    copy.SetStyle(YAML::EmitterStyle::Block);
+    return copy;
+  }
+  return YAML::Clone(node);
+}
+
+}  // namespace
+
+std::string model_code_text(const std::string& text, const std::string& file) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw ModelError({file, e.mark.line + 1, e.mark.column + 1}, "YAML syntax: " + e.msg);
+  }
+  if (!root.IsMap()) return YAML::Dump(root);
+  YAML::Node code(YAML::NodeType::Map);
+  for (const auto& item : root) {
+    const std::string key = item.first.IsScalar() ? item.first.Scalar() : "";
+    if (key == "name" || key == "description" || key == "reference" || key == "initial") continue;
+    if (key == "simulate") {
+      if (item.second.IsMap() && item.second["stop_when"]) {
+        code["simulate.stop_when"] = in_block_style(item.second["stop_when"]);
+      }
+      continue;
+    }
+    code[in_block_style(item.first)] = in_block_style(item.second);
+  }
+  return YAML::Dump(code);
+}
+
 std::string read_model_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ModelError({path, 0, 0}, "cannot open the model file");

@@ -48,6 +48,24 @@ TEST(HostileInput, PipedModelsAreKeyedByTheBytesParsed) {
   }
 }
 
+// The cache's key is what determines the code: a comment, another start or other settings reuse
+// the library; another force compiles anew.
+TEST(HostileInput, CacheKeyIsWhatDeterminesTheCode) {
+  const std::string cache = "UNIDYN_CACHE_DIR='" + fresh_directory("code-key") + "'";
+  const std::string path = temp_path("code-key.yaml");
+  const std::string forces = "forces:\n  - gravity: -g*E2\n";
+  write_file(path, model_text(forces + "initial: {der(x): 1}\n"));
+  EXPECT_TRUE(contains(run("simulate '" + path + "' --t-end 0.1 -o /dev/null", cache).out,
+                       "native code (compiled"));
+  write_file(path,
+             "# a comment\n" + model_text(forces + "initial: {x: 2}\nsimulate: {t_end: 3}\n"));
+  EXPECT_TRUE(contains(run("simulate '" + path + "' --t-end 0.1 -o /dev/null", cache).out,
+                       "native code (cached"));
+  write_file(path, model_text("forces:\n  - gravity: -g*E1\n"));
+  EXPECT_TRUE(contains(run("simulate '" + path + "' --t-end 0.1 -o /dev/null", cache).out,
+                       "native code (compiled"));
+}
+
 // Output that cannot be written is a failed run: exit 1 with the reason; a file cut by a size
 // limit ends with its last complete row, and the summary counts only those rows.
 TEST(HostileInput, UnwritableOutputFailsTheRun) {

@@ -15,6 +15,13 @@ System load_model(const std::string& path);
 // reads, and what the native-code cache is keyed by. Throws ModelError when it cannot be read.
 std::string read_model_text(const std::string& path);
 
+// What of a model file determines its compiled code, for the native-code cache's key: the YAML
+// re-emitted in one canonical form (no comments, one layout) without name:, description:,
+// reference:, initial: and simulate: (but for simulate:'s stop_when, which is compiled). Equal
+// for two files that differ only in those; different whenever the code could differ. Throws
+// ModelError for text that is not YAML.
+std::string model_code_text(const std::string& text, const std::string& file);
+
 // The same from text (`file` is the name used in error messages).
 System parse_model(const std::string& text, const std::string& file);
 
