@@ -183,6 +183,25 @@ std::vector<std::string> complete_initial_state(const System& system,
         "computed, or use --project");
   }
 
+  // The rows that hold must be independent there: A q̈ = −b would have no solution or many.
+  if (!rows.empty()) {
+    const Eigen::MatrixXd held = data.constraint_matrix(rows, Eigen::all);
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(held.transpose());
+    if (qr.rank() < static_cast<Eigen::Index>(rows.size())) {
+      // the rows the pivoting leaves out depend on the others
+      std::string dependent;
+      for (Eigen::Index k = qr.rank(); k < static_cast<Eigen::Index>(rows.size()); ++k) {
+        const Eigen::Index row = rows[static_cast<std::size_t>(qr.colsPermutation().indices()[k])];
+        dependent += (dependent.empty() ? "'" : ", '") +
+                     system.constraints[static_cast<std::size_t>(row)].name + "'";
+      }
+      throw InitialStateError("the constraints are not independent at the initial state: " +
+                              dependent + " depend" + (rows.size() - qr.rank() > 1 ? "" : "s") +
+                              " on the others (a redundant constraint, or a singular "
+                              "configuration); remove it or start elsewhere");
+    }
+  }
+
   // Unilateral contacts: apart or touching, not inside.
   for (std::size_t k = 0; k < m; ++k) {
     const auto K = static_cast<Eigen::Index>(k);

@@ -145,6 +145,16 @@ TEST(InitialState, AngularVelocityOfABody) {
   EXPECT_NEAR(body.z(), 3.0, 1e-13);
 }
 
+// Two rows that say the same thing (x = 0 twice) cannot both hold with independent multipliers.
+TEST(InitialState, DependentConstraintsAreRefused) {
+  const std::string twice =
+      "unidyn: 1\ncoordinates: [x, y]\nparticles:\n  P: {mass: 1, position: [x, y, 0]}\n"
+      "constraints:\n  - {name: a, position: x}\n  - {name: b, position: 2*x}\n";
+  const std::string message = error_of(twice);
+  EXPECT_TRUE(contains(message, "not independent")) << message;
+  EXPECT_TRUE(contains(message, "'a'") || contains(message, "'b'")) << message;
+}
+
 TEST(InitialState, AUnilateralContactMustNotStartInside) {
   const std::string ball =
       "unidyn: 1\ncoordinates: [z]\nparticles:\n  P: {mass: 1, position: [0, 0, z]}\n"
