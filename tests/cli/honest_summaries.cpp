@@ -37,13 +37,18 @@ TEST(HonestSummaries, CheckFailsOffTheConstraints) {
   EXPECT_TRUE(contains(on.out, "check passed")) << on.out;
 }
 
-TEST(HonestSummaries, CheckFailsWithASingularMassMatrix) {
-  // r = (x y, y, 0): M = m [[y², x y], [x y, x² + 1]] has det m² y⁴, singular at y = 0
+// r = (x y, y, 0): M = m [[y², x y], [x y, x² + 1]] has det m² y⁴, singular at the start y = 0.
+std::string singular_model(const std::string& more = "") {
   const std::string path = temp_path("singular.yaml");
   write_file(path,
              "unidyn: 1\nparameters: {m: 1}\ncoordinates: [x, y]\nparticles:\n"
-             "  P: {mass: m, position: [x*y, y, 0]}\n");
-  const Outcome r = run("check '" + path + "'");
+             "  P: {mass: m, position: [x*y, y, 0]}\n" +
+                 more);
+  return path;
+}
+
+TEST(HonestSummaries, CheckFailsWithASingularMassMatrix) {
+  const Outcome r = run("check '" + singular_model() + "'");
   EXPECT_EQ(r.status, 1) << r.out << r.err;
   EXPECT_TRUE(contains(r.out, "cannot be solved at the initial state")) << r.out;
   // a unilateral contact that starts apart is not a violation
@@ -94,11 +99,8 @@ TEST(HonestSummaries, MultiplierRanges) {
 
 // A run that fails at its start computed no rows: no energy, residual or conserved figures.
 TEST(HonestSummaries, NoFiguresWithoutRows) {
-  const std::string path = temp_path("singular.yaml");
-  write_file(path,
-             "unidyn: 1\nparameters: {m: 1}\ncoordinates: [x, y]\nparticles:\n"
-             "  P: {mass: m, position: [x*y, y, 0]}\nconserved:\n  px: m*der(x)\n");
-  const Outcome r = run("simulate '" + path + "' -o /dev/null");
+  const Outcome r =
+      run("simulate '" + singular_model("conserved:\n  px: m*der(x)\n") + "' -o /dev/null");
   EXPECT_EQ(r.status, 1);
   EXPECT_TRUE(contains(r.out, "0 rows")) << r.out;
   for (const char* figure : {"energy", "residuals", "conserved", "lambda("}) {
