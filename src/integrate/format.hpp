@@ -1,4 +1,4 @@
-// Numbers in error messages: the shortest text that reads back to the same double.
+// Numbers in error messages and summaries.
 #pragma once
 
 #include <array>
@@ -7,9 +7,19 @@
 
 namespace unidyn::detail {
 
+// The shortest text that reads back to the same double.
 inline std::string to_text(double value) {
   std::array<char, 32> buffer{};
   const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  return std::string(buffer.data(), result.ptr);
+}
+
+// Numbers in summaries and messages about a state: twelve significant digits, so that a value
+// computed as -3 + 0.9 reads -2.1.
+inline std::string to_short_text(double value) {
+  std::array<char, 32> buffer{};
+  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                    std::chars_format::general, 12);
   return std::string(buffer.data(), result.ptr);
 }
 

@@ -4,19 +4,12 @@
 
 #include <Eigen/QR>
 #include <cmath>
-#include <sstream>
 
+#include "format.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {
 namespace {
-
-std::string number(double x) {
-  std::ostringstream text;
-  text.precision(12);
-  text << x;
-  return text.str();
-}
 
 // The coordinates that constraint row k involves (non-zero entries of its row of A), with a mark
 // on those given.
@@ -124,11 +117,11 @@ std::vector<std::string> complete_initial_state(const System& system,
   const std::vector<Eigen::Index> free_q = free_indices(start.q_given);
   const auto position_failure = [&](const std::string& why) {
     const auto [k, r] = worst(data.constraint_position, position_rows);
-    throw InitialStateError("the initial state cannot satisfy constraint '" +
-                            system.constraints[static_cast<std::size_t>(k)].name +
-                            "' (Psi = " + number(data.constraint_position[k]) + ", coordinates " +
-                            involved(system, data.constraint_matrix, k, start.q_given, "", "") +
-                            "): " + why);
+    throw InitialStateError(
+        "the initial state cannot satisfy constraint '" +
+        system.constraints[static_cast<std::size_t>(k)].name +
+        "' (Psi = " + detail::to_short_text(data.constraint_position[k]) + ", coordinates " +
+        involved(system, data.constraint_matrix, k, start.q_given, "", "") + "): " + why);
   };
   for (int iteration = 0;; ++iteration) {
     const double residual = worst(data.constraint_position, position_rows).second;
@@ -177,7 +170,7 @@ std::vector<std::string> complete_initial_state(const System& system,
     throw InitialStateError(
         "the initial rates cannot satisfy constraint '" +
         system.constraints[static_cast<std::size_t>(k)].name +
-        "' (A q' + e = " + number(velocity[k]) + ", rates " +
+        "' (A q' + e = " + detail::to_short_text(velocity[k]) + ", rates " +
         involved(system, data.constraint_matrix, k, start.qdot_given, "der(", ")") +
         "): the rates given violate it; leave one of them out of initial: (and --set) to have it "
         "computed, or use --project");
@@ -207,20 +200,22 @@ std::vector<std::string> complete_initial_state(const System& system,
     const auto K = static_cast<Eigen::Index>(k);
     if (!system.constraints[k].unilateral) continue;
     if (data.constraint_position[K] < -kInitialStateTolerance) {
-      throw InitialStateError(
-          "the initial state is inside the unilateral contact '" + system.constraints[k].name +
-          "' (Psi = " + number(data.constraint_position[K]) + " < 0): start it apart or touching");
+      throw InitialStateError("the initial state is inside the unilateral contact '" +
+                              system.constraints[k].name +
+                              "' (Psi = " + detail::to_short_text(data.constraint_position[K]) +
+                              " < 0): start it apart or touching");
     }
   }
 
   // What was computed.
   const auto& q = system.coordinates();
   for (const Eigen::Index j : free_q) {
-    if (start.q[j] != q_given_values[j]) computed.push_back(q[j].name + " = " + number(start.q[j]));
+    if (start.q[j] != q_given_values[j])
+      computed.push_back(q[j].name + " = " + detail::to_short_text(start.q[j]));
   }
   for (const Eigen::Index j : free_v) {
     if (start.qdot[j] != 0.0)
-      computed.push_back("der(" + q[j].name + ") = " + number(start.qdot[j]));
+      computed.push_back("der(" + q[j].name + ") = " + detail::to_short_text(start.qdot[j]));
   }
   return computed;
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "format.hpp"
 #include "unidyn/equations/kane.hpp"
 #include "unidyn/integrate/contacts.hpp"
 #include "unidyn/integrate/cvode.hpp"
@@ -36,13 +37,6 @@ bool has_energy_column(const System& system) {
     if (!f.conservative) return false;
   }
   return true;
-}
-
-std::string format_number(double x) {
-  std::ostringstream text;
-  text.precision(12);
-  text << x;
-  return text.str();
 }
 
 // "L2 = 6 from 2*L"
@@ -205,7 +199,7 @@ void expect_no_gimbal_lock(const System& system, const Eigen::VectorXd& q) {
     const auto& names = system.coordinates();
     throw std::invalid_argument(
         "body '" + body.name + "' starts at the gimbal lock of its " + body.chart->set.name() +
-        " Euler angles (" + names[c[1]].name + " = " + format_number(angles[1]) +
+        " Euler angles (" + names[c[1]].name + " = " + detail::to_short_text(angles[1]) +
         ", where only the sum or difference of " + names[c[0]].name + " and " + names[c[2]].name +
         " is defined and the mass matrix is singular): start it elsewhere, or describe its "
         "rotation with {euler: " +
