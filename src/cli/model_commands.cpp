@@ -408,12 +408,14 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
 
   // The summary goes to standard error when the CSV takes standard output.
   std::FILE* out = path == "-" ? stderr : stdout;
-  fmt::print(out, "{}: {} from t = 0 to {} ({}), {} rows{}\n", system.name,
-             s.ok                    ? (s.stopped ? "simulated until stop_when" : "simulated")
-             : interrupt.requested() ? "INTERRUPTED"
-                                     : "FAILED",
-             options.t_end, options.method, s.rows,
-             path == "-" ? "" : " written to " + printable(path));
+  fmt::print(
+      out, "{}: {} from t = 0 to {} ({}), {} rows{}{}\n", system.name,
+      s.ok                    ? (s.stopped ? "simulated until stop_when" : "simulated")
+      : interrupt.requested() ? "INTERRUPTED"
+                              : "FAILED",
+      options.t_end, options.method, s.rows,
+      s.event_rows > 0 ? fmt::format(" ({} at events between output times)", s.event_rows) : "",
+      path == "-" ? "" : " written to " + printable(path));
   if (interrupt.requested()) {
     fmt::print(out, "  interrupted at t = {:.10g}\n", s.failure_time);
   } else if (!s.ok) {

@@ -101,12 +101,17 @@ IntegrationResult integrate(Stepper& stepper, double t0, const Eigen::VectorXd& 
   Eigen::VectorXd row, hooked;
   // Exceptions from the output callback are the caller's, not a failure of the integration.
   bool in_output = false;
+  // A row at t: the grid's next time (then the grid moves on), or an event's time between two.
   const auto emit = [&](double t, const Eigen::VectorXd& y) {
     in_output = true;
     if (callbacks.output) callbacks.output(t, y);
     in_output = false;
     ++result.rows;
-    grid.advance();
+    if (grid.reached(t)) {
+      grid.advance();
+    } else {
+      ++result.event_rows;
+    }
   };
 
   // The first row, then step by step: rows inside each step, the hook, the row at its end.
@@ -128,7 +133,8 @@ IntegrationResult integrate(Stepper& stepper, double t0, const Eigen::VectorXd& 
           hooked = stepper.dense(event->t);
           if (callbacks.post_step) callbacks.post_step(event->t, hooked);
           const bool go_on = callbacks.on_event(event->t, hooked, event->which);
-          if (grid.reached(event->t)) emit(event->t, hooked);
+          // the event's own row, with the state the integration goes on from
+          emit(event->t, hooked);
           stepper.restart_at(event->t, hooked);
           if (!go_on) {
             result.stopped = true;

@@ -526,6 +526,7 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
         integrate(*stepper, start.t0, y0, options.t_end, options.output_step, callbacks);
     summary.ok = result.ok;
     summary.stopped = result.stopped;
+    summary.event_rows = result.event_rows;
     summary.message = result.message;
     summary.failure_time = result.t_failure;
     summary.stats = result.stats;

@@ -2,7 +2,7 @@
 // initial state off its constraints or with a singular mass matrix; `simulate` says why the
 // energy of a driven or dissipative model changes (the figures from the CSV's own energy column),
 // gives each multiplier's range (from the CSV's lambda column), prints no figures for rows it did
-// not compute, and takes stop_when under simulate:.
+// not compute, takes stop_when under simulate:, and writes a row at each event.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -194,6 +194,39 @@ TEST(HonestSummaries, InitialValuesGivenStay) {
   const Outcome projected = run("simulate '" + path + "' --set y1=-0.9 --project -o /dev/null");
   EXPECT_EQ(projected.status, 0) << projected.err;
   EXPECT_TRUE(contains(projected.out, "the initial state was moved by")) << projected.out;
+}
+
+// Each event has its own row at the event's time, with the state the run goes on from (after an
+// impact, the rebound), between the rows of the output grid; the summary counts them.
+TEST(HonestSummaries, EventsHaveTheirOwnRows) {
+  const std::string csv = temp_path("bounces.csv");
+  const Outcome r = run("simulate bouncing-ball --t-end 2 -o '" + csv + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Csv rows = parse_csv(read_file(csv));
+  std::vector<double> impacts;
+  for (const std::string& line : lines_starting(r.out, "    t = ")) {
+    if (contains(line, "impact")) impacts.push_back(std::stod(line.substr(8)));
+  }
+  ASSERT_EQ(impacts.size(), 3u) << r.out;  // at 0.45, 1.17 and 1.75 s
+  EXPECT_TRUE(contains(r.out, "204 rows (3 at events between output times)")) << r.out;
+  std::size_t on_grid = 0, found = 0;
+  for (std::size_t i = 0; i < rows.rows.size(); ++i) {
+    const double t = rows.at(i, "t");
+    if (i > 0) {
+      EXPECT_GT(t, rows.at(i - 1, "t")) << i;
+    }
+    if (std::abs(t - 0.01 * double(on_grid)) < 1e-12) {
+      ++on_grid;
+      continue;
+    }
+    ASSERT_LT(found, impacts.size()) << "a row at t = " << t;
+    EXPECT_NEAR(t, impacts[found], 1e-11);
+    EXPECT_NEAR(rows.at(i, "z"), 0.0, 1e-9);  // located to 1e-13 s
+    EXPECT_GT(rows.at(i, "der(z)"), 0.0);
+    ++found;
+  }
+  EXPECT_EQ(on_grid, 201u);
+  EXPECT_EQ(found, impacts.size());
 }
 
 }  // namespace

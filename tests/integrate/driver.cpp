@@ -228,7 +228,8 @@ TEST(DriverEvents, BouncingBallImpactTimes) {
   };
   DormandPrince54 stepper(ball, tolerances(1e-12, 1e-14));
   std::vector<double> impacts;
-  IntegrationCallbacks callbacks;
+  std::vector<Row> rows;
+  IntegrationCallbacks callbacks = recorder(rows);
   callbacks.events = [](double, const Eigen::VectorXd& y, Eigen::VectorXd& values) {
     values.resize(1);
     values[0] = y[0];
@@ -251,6 +252,23 @@ TEST(DriverEvents, BouncingBallImpactTimes) {
     speed *= e;
     expected += 2 * speed / g;
   }
+  // each impact has its own row, with the velocity after it; the grid rows are still k · 0.01
+  std::size_t on_grid = 0, k = 0;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    if (r > 0) {
+      EXPECT_GT(rows[r].t, rows[r - 1].t) << r;
+    }
+    if (k < impacts.size() && rows[r].t == impacts[k]) {
+      EXPECT_EQ(rows[r].y[0], 0.0);
+      EXPECT_GT(rows[r].y[1], 0.0);
+      ++k;
+    } else {
+      EXPECT_NEAR(rows[r].t, 0.01 * double(on_grid++), 1e-12) << r;
+    }
+  }
+  EXPECT_EQ(k, impacts.size());
+  EXPECT_EQ(on_grid, 301u);
+  EXPECT_EQ(result.rows, rows.size());
 }
 
 // An event that stops the run: x = cos t reaches 0 at π/2; the rows stop there.
@@ -274,8 +292,9 @@ TEST(DriverEvents, StopEventEndsTheRunWhereItIsLocated) {
   EXPECT_TRUE(result.stopped);
   EXPECT_NEAR(when, std::acos(0.0), 1e-10);
   EXPECT_EQ(result.t, when);
-  EXPECT_LE(rows.back().t, when);
-  EXPECT_EQ(rows.size(), 16u);  // 0, 0.1, …, 1.5
+  EXPECT_EQ(rows.size(), 17u);  // 0, 0.1, …, 1.5, then the stop's own row
+  EXPECT_EQ(rows.back().t, when);
+  EXPECT_NEAR(rows.back().y[0], 0.0, 1e-12);
 }
 
 }  // namespace

@@ -31,7 +31,8 @@ TEST(StringThroughHole, FrictionDissipation) {
   const double mu_d = 0.1;
   const test::ModelRun run =
       test::run_model("string-through-hole", {{"mu_d", mu_d}, {"der(x2)", 0.3}},
-                      [](SimulationOptions& o) { o.t_end = 1.0; });
+                      [](SimulationOptions& o) { o.t_end = 1.0; })
+          .on_grid(0.01);
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
   ASSERT_EQ(run.rows.size(), 101u);
   double integral = 0;  // ∫ |v1| dt

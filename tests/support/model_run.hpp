@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -38,6 +39,14 @@ struct ModelRun {
     std::vector<double> values;
     for (const auto& r : rows) values.push_back(r[index(name)]);
     return values;
+  }
+  // The rows on the output grid t = k · step (t0 = 0), without the events' own rows between.
+  ModelRun on_grid(double step) const {
+    ModelRun grid{system, columns, {}, summary};
+    for (const auto& r : rows) {
+      if (std::abs(r[0] / step - std::round(r[0] / step)) < 1e-9) grid.rows.push_back(r);
+    }
+    return grid;
   }
 };
 

@@ -21,9 +21,10 @@ struct IntegrationCallbacks {
   // Event functions g(t, y) (g sized by the callee). An event is some g_i going from > 0 to ≤ 0
   // within a step: it is located on the dense output to within kEventTimeTolerance (the time
   // returned is on the ≤ 0 side), rows up to it are emitted, and on_event gets the state there,
-  // which it may change (a new phase, an impulse); integration then restarts from it, or stops
-  // there when on_event returns false. Just after its event a g_i counts as positive, so that any
-  // return to ≤ 0, however brief the excursion, is the next event.
+  // which it may change (a new phase, an impulse); the event's own row follows, at its time (on
+  // the grid or between two grid times) with the state on_event left; integration then restarts
+  // from it, or stops there when on_event returns false. Just after its event a g_i counts as
+  // positive, so that any return to ≤ 0, however brief the excursion, is the next event.
   std::function<void(double t, const Eigen::VectorXd& y, Eigen::VectorXd& g)> events;
   std::function<bool(double t, Eigen::VectorXd& y, std::size_t which)> on_event;
 };
@@ -41,6 +42,8 @@ struct IntegrationResult {
   Eigen::VectorXd y;
   StepperStats stats;
   std::size_t rows = 0;
+  // Of the rows, those at events between two output times.
+  std::size_t event_rows = 0;
   // on_event asked to stop: the run ended at t before t_end, successfully.
   bool stopped = false;
 };

@@ -48,6 +48,8 @@ struct SimulationSummary {
   std::string message;        // why a failed run stopped
   double failure_time = 0.0;  // where
   std::size_t rows = 0;
+  // Of the rows, those at events between two output times.
+  std::size_t event_rows = 0;
   bool has_energy = false;
   double energy_initial = 0.0;
   // E and t at the last row
