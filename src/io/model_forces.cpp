@@ -1,5 +1,5 @@
 // The model file's forces: gravity, springs, dampers, forces and moments, potentials, torsion
-// springs, gravity gradient, gravitation.
+// springs and dampers, gravity gradient, gravitation.
 #include "model_reader.hpp"
 
 namespace unidyn::model_reading {
@@ -45,13 +45,36 @@ ForcePoint ModelReader::force_point(const YAML::Node& node, const System& system
   return {std::nullopt, point, std::nullopt};
 }
 
+// The angle of a torsion spring or damper (`angle:`, with `on:` the body it turns) and the moments
+// of a unit torque about it: a joint's angle, or one of a body's Euler angles.
+std::pair<std::size_t, std::vector<AngleTorque>> ModelReader::torsion_angle(
+    const YAML::Node& spec, const System& system, const std::string& what) {
+  std::optional<std::size_t> on;
+  if (spec["on"]) {
+    on = system.find_body(scalar(spec["on"], "on"));
+    if (!on) fail(spec["on"], "on: must name a body");
+  }
+  const auto q = system.find_coordinate(scalar(spec["angle"], "angle"));
+  if (!q) fail(spec["angle"], "angle: must name a coordinate");
+  std::vector<AngleTorque> unit_torque = unit_torque_about(system, *q, on);
+  if (unit_torque.empty()) {
+    fail(spec["angle"],
+         "a " + what + " needs the angle of a joint (two bodies, or a body and the ground, whose " +
+             "relative angular velocity is " + system.coordinates()[*q].name +
+             "' times a unit vector)" + (on ? " of body '" + system.bodies[*on].name + "'" : "") +
+             " or one of a body's Euler angles; a spring on the coordinate alone is a potential: " +
+             "K*(q - q0)^2/2");
+  }
+  return {*q, std::move(unit_torque)};
+}
+
 void ModelReader::read_forces(const YAML::Node& node, System& system) {
   if (!node.IsSequence()) fail(node, "forces must be a list, e.g. [{gravity: -g*E3}]");
   for (const auto& entry : node) {
     if (!entry.IsMap() || entry.size() != 1) {
       fail(entry,
            "each force is one of: gravity, spring, damper, force, moment, potential, gravitation, "
-           "gravity_gradient, torsion_spring");
+           "gravity_gradient, torsion_spring, torsion_damper");
     }
     const std::string kind = entry.begin()->first.Scalar();
     const YAML::Node spec = entry.begin()->second;  // a copy: the iterator is a temporary
@@ -160,22 +183,12 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
       } else if (kind == "torsion_spring") {
         expect_map(spec, "torsion_spring");
         expect_keys(spec, {"on", "angle", "stiffness", "rest_angle"}, "torsion_spring");
-        if (!spec["on"] || !spec["angle"] || !spec["stiffness"]) {
+        if (!spec["angle"] || !spec["stiffness"]) {
           fail(spec,
-               "a torsion_spring needs on: (a body), angle: (one of its Euler angles) and "
+               "a torsion_spring needs angle: (a joint's angle or a body's Euler angle) and "
                "stiffness:");
         }
-        const auto b = system.find_body(scalar(spec["on"], "on"));
-        if (!b) fail(spec["on"], "on: must name a body");
-        const auto& chart = system.bodies[*b].chart;
-        if (!chart)
-          fail(spec["on"], "a torsion_spring needs a body turned by {euler: .., angles: [..]}");
-        const auto q = system.find_coordinate(scalar(spec["angle"], "angle"));
-        int angle = -1;
-        for (int i = 0; i < 3; ++i) {
-          if (q && chart->coordinates[static_cast<std::size_t>(i)] == *q) angle = i;
-        }
-        if (angle < 0) fail(spec["angle"], "angle: must be one of the body's Euler angles");
+        const auto [q, unit_torque] = torsion_angle(spec, system, "torsion_spring");
         const Expr K = scalar_expr(spec["stiffness"], scope, "stiffness");
         expect_state_only(spec["stiffness"], K, system, "a stiffness");
         Expr rest = 0;
@@ -183,7 +196,19 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
           rest = scalar_expr(spec["rest_angle"], scope, "rest_angle");
           expect_state_only(spec["rest_angle"], rest, system, "a rest angle");
         }
-        element = torsion_spring(system, *b, angle, K, rest);
+        element = torsion_spring(system, q, unit_torque, K, rest);
+      } else if (kind == "torsion_damper") {
+        expect_map(spec, "torsion_damper");
+        expect_keys(spec, {"on", "angle", "coefficient"}, "torsion_damper");
+        if (!spec["angle"] || !spec["coefficient"]) {
+          fail(spec,
+               "a torsion_damper needs angle: (a joint's angle or a body's Euler angle) and "
+               "coefficient:");
+        }
+        const auto [q, unit_torque] = torsion_angle(spec, system, "torsion_damper");
+        const Expr c = scalar_expr(spec["coefficient"], scope, "coefficient");
+        expect_state_only(spec["coefficient"], c, system, "a damping coefficient");
+        element = torsion_damper(system, q, unit_torque, c);
       } else if (kind == "potential") {
         const Expr U = scalar_expr(spec, scope, "potential");
         expect_state_only(spec, U, system, "a potential U(q, t)");
@@ -205,8 +230,8 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
       } else {
         fail(entry.begin()->first, "unknown force '" + kind +
                                        "' (expected gravity, spring, damper, force, moment, "
-                                       "potential, gravitation, gravity_gradient or "
-                                       "torsion_spring)");
+                                       "potential, gravitation, gravity_gradient, "
+                                       "torsion_spring or torsion_damper)");
       }
     } catch (const ModelError&) {
       throw;

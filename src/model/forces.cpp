@@ -138,15 +138,27 @@ ForceElement gravity_gradient(const System& system, std::size_t body, const Expr
 
 namespace unidyn {
 
-ForceElement torsion_spring(const System& system, std::size_t body, int angle, const Expr& K,
+ForceElement torsion_spring(const System& system, std::size_t angle,
+                            const std::vector<AngleTorque>& unit_torque, const Expr& K,
                             const Expr& rest_angle) {
   ForceElement element = new_element(ForceElement::Kind::torsion_spring, "torsion_spring", true);
-  const auto i = static_cast<std::size_t>(angle);
-  const Expr gamma = system.coordinates()[system.bodies[body].chart->coordinates[i]].value;
-  // U = ½ K (γ − γ0)²; (8.27) M = −∂U/∂γ g^i
+  const Expr gamma = system.coordinates()[angle].value;
+  // U = ½ K (γ − γ0)²; (8.27) M = −∂U/∂γ m_B
   element.potential = K * GiNaC::pow(gamma - rest_angle, 2) / 2;
-  const VectorExpr dual = system.dual_euler_basis(body)[i];
-  element.moments.push_back({body, -K * (gamma - rest_angle) * dual});
+  for (const AngleTorque& m : unit_torque) {
+    element.moments.push_back({m.body, -K * (gamma - rest_angle) * m.per_unit_torque});
+  }
+  return element;
+}
+
+ForceElement torsion_damper(const System& system, std::size_t angle,
+                            const std::vector<AngleTorque>& unit_torque, const Expr& c) {
+  ForceElement element = new_element(ForceElement::Kind::torsion_damper, "torsion_damper", false);
+  // M = −c γ̇ m_B
+  const Expr rate = system.coordinates()[angle].rate;
+  for (const AngleTorque& m : unit_torque) {
+    element.moments.push_back({m.body, -c * rate * m.per_unit_torque});
+  }
   return element;
 }
 

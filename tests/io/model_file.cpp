@@ -801,7 +801,8 @@ TEST(ModelFileErrors, BodyJointsAndLoads) {
   const std::string no_body = "  - spring: {from: {on: C}, to: [0, 0, 0], stiffness: K}";
   expect_error(force(no_body), 7, column_of(no_body, "C}"), {"on: must name a body"});
   const std::string not_angle = "  - torsion_spring: {on: B, angle: x, stiffness: K}";
-  expect_error(force(not_angle), 7, column_of(not_angle, "x,"), {"one of the body's Euler"});
+  expect_error(force(not_angle), 7, column_of(not_angle, "x,"),
+               {"the angle of a joint", "Euler angles"});
   const std::string no_normal = "  - {name: r, rolling: {body: B, at: B.center}}";
   expect_error(constraint(no_normal), 7, column_of(no_normal, "{body"), {"normal:"});
   const std::string bent = "  - {name: r, rolling: {body: B, at: B.center, normal: [0, 0, m]}}";

@@ -50,12 +50,12 @@ struct ModelRun {
   }
 };
 
-// Simulates a bundled model with NAME=VALUE overrides; `adjust` may change the options (t_end,
-// output_step, method, rtol) that the model file sets.
-inline ModelRun run_model(const std::string& name,
-                          const std::vector<std::pair<std::string, double>>& overrides = {},
-                          const std::function<void(SimulationOptions&)>& adjust = {}) {
-  ModelRun run{load_model(model_path(name)), {}, {}, {}};
+// Simulates a system through the whole pipeline with NAME=VALUE overrides; `adjust` may change the
+// options (t_end, output_step, method, rtol) that the model file sets.
+inline ModelRun run_system(System system,
+                           const std::vector<std::pair<std::string, double>>& overrides = {},
+                           const std::function<void(SimulationOptions&)>& adjust = {}) {
+  ModelRun run{std::move(system), {}, {}, {}};
   SimulationOptions options = simulation_options(run.system.simulate);
   if (adjust) adjust(options);
   const CompiledSystem compiled(run.system, lagrange_equations(run.system));
@@ -63,6 +63,13 @@ inline ModelRun run_model(const std::string& name,
   run.summary = simulate(run.system, compiled, initial_state(run.system, overrides), options,
                          [&](const std::vector<double>& row) { run.rows.push_back(row); });
   return run;
+}
+
+// A bundled model, so simulated.
+inline ModelRun run_model(const std::string& name,
+                          const std::vector<std::pair<std::string, double>>& overrides = {},
+                          const std::function<void(SimulationOptions&)>& adjust = {}) {
+  return run_system(load_model(model_path(name)), overrides, adjust);
 }
 
 }  // namespace unidyn::test

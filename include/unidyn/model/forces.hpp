@@ -4,6 +4,7 @@
 
 #include <optional>
 
+#include "unidyn/model/angle_joint.hpp"
 #include "unidyn/model/system.hpp"
 
 namespace unidyn {
@@ -49,11 +50,17 @@ ForceElement body_moment(std::size_t body, const VectorExpr& moment);
 ForceElement gravity_gradient(const System& system, std::size_t body, const Expr& GM,
                               const VectorExpr& attractor);
 
-// A torsion spring on one Euler angle γ^i of body B (Ex. 8.6): U = ½ K (γ^i − γ0)², and by (8.27)
-// the conservative moment M = −∂U/∂γ^i g^i = −K (γ^i − γ0) g^i along the dual Euler basis vector,
-// not along the angle's axis. `angle` is the index 0..2 in the body's Euler chart.
-ForceElement torsion_spring(const System& system, std::size_t body, int angle, const Expr& K,
+// A torsion spring on an angle γ: one of a body's Euler angles (Ex. 8.6) or a joint's angle
+// (model/angle_joint.hpp), given by its unit-torque moments: U = ½ K (γ − γ0)², and by (8.27) the
+// conservative moments −K (γ − γ0) m_B (along the dual Euler basis vector for an Euler angle, not
+// along the angle's axis; ±w on the joint's two bodies).
+ForceElement torsion_spring(const System& system, std::size_t angle,
+                            const std::vector<AngleTorque>& unit_torque, const Expr& K,
                             const Expr& rest_angle);
+
+// A torsion damper on such an angle: the moments −c γ̇ m_B, whose power is −c γ̇².
+ForceElement torsion_damper(const System& system, std::size_t angle,
+                            const std::vector<AngleTorque>& unit_torque, const Expr& c);
 
 // A potential energy U(q, t) given directly in the coordinates.
 ForceElement coordinate_potential(const Expr& U);

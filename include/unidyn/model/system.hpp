@@ -83,7 +83,8 @@ struct ForceElement {
     gravitation,
     moment,
     gravity_gradient,
-    torsion_spring
+    torsion_spring,
+    torsion_damper
   };
   Kind kind;
   std::string label;
