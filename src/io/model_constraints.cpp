@@ -246,8 +246,8 @@ void ModelReader::read_joint(const YAML::Node& spec, const std::string& name, Sy
   }
 }
 
-// rolling: {body: B, at: <its point of contact>, normal: [n1, n2, n3]}: rows name_1, name_2 that
-// keep the contact from slipping on the fixed surface (model/joints.hpp).
+// rolling: {body: B, at: <its point of contact>, normal: <the surface's normal there>}: rows
+// name_1, name_2 that keep the contact from slipping on the fixed surface (model/joints.hpp).
 void ModelReader::read_rolling(const YAML::Node& spec, const std::string& name, System& system) {
   const YAML::Node r = spec["rolling"];
   expect_map(r, "rolling");
@@ -256,7 +256,7 @@ void ModelReader::read_rolling(const YAML::Node& spec, const std::string& name, 
     fail(spec, "rolling cannot be unilateral or carry friction (it is the no-slip condition)");
   }
   if (!r["body"] || !r["at"] || !r["normal"]) {
-    fail(r, "rolling needs body:, at: (its point of contact) and normal: (the surface's, numbers)");
+    fail(r, "rolling needs body:, at: (its point of contact) and normal: (the surface's there)");
   }
   const auto b = system.find_body(scalar(r["body"], "body"));
   if (!b) fail(r["body"], "body: must name a body");
@@ -264,13 +264,20 @@ void ModelReader::read_rolling(const YAML::Node& spec, const std::string& name, 
   const VectorExpr contact = vector_expr(r["at"], scope, "at");
   expect_state_only(r["at"], contact, system, "a point of contact");
   const VectorExpr normal = vector_expr(r["normal"], scope, "normal");
+  expect_state_only(r["normal"], normal, system, "the normal of a fixed surface");
   for (int i = 0; i < 3; ++i) {
-    if (!GiNaC::is_a<GiNaC::numeric>(normal[i])) {
-      fail(r["normal"], "a normal is a vector of numbers, e.g. [0, 0, 1]");
+    if (normal[i].has(system.time())) {
+      fail(r["normal"], "rolling is on a fixed surface: its normal cannot depend on t");
     }
   }
   if (norm(normal).is_zero()) fail(r["normal"], "a normal cannot be zero");
-  for (auto& c : rolling_contact(system, name, *b, contact, normal, at(spec))) {
+  std::vector<Constraint> rows;
+  try {
+    rows = rolling_contact(system, name, *b, contact, normal, at(spec));
+  } catch (const std::invalid_argument& e) {
+    fail(r["normal"], e.what());
+  }
+  for (auto& c : rows) {
     if (system.find_parameter(c.name) || system.find_coordinate(c.name) ||
         system.find_particle(c.name) || system.find_body(c.name)) {
       fail(spec, "the rolling row '" + c.name + "' clashes with a name already defined");

@@ -1,6 +1,8 @@
 // Ball joints and pins as constraints with their Lagrange representation (8.22)–(8.24).
 #include "unidyn/model/joints.hpp"
 
+#include "unidyn/symbolic/printing.hpp"
+
 #include <array>
 #include <stdexcept>
 
@@ -75,6 +77,23 @@ std::array<VectorExpr, 2> perpendiculars(const VectorExpr& A) {
   return {B1, cross(A, B1)};
 }
 
+// The tangents t_1, t_2 of a surface with normal n: for numbers, completing n/‖n‖ to an
+// orthonormal triad; for an expression of the coordinates, perpendicular to a basis vector E_k
+// throughout (a cylinder about E_k), t_1 = E_k and t_2 = n × E_k/‖n‖, defined wherever n ≠ 0.
+std::array<VectorExpr, 2> surface_tangents(const VectorExpr& normal) {
+  bool numeric = true;
+  for (int i = 0; i < 3; ++i) numeric = numeric && GiNaC::is_a<GiNaC::numeric>(normal[i]);
+  if (numeric) return perpendiculars(unit_numeric(normal, "normal"));
+  for (int k = 1; k <= 3; ++k) {
+    const VectorExpr E = basis_vector_expr(k);
+    if (simplify(dot(normal, E)).is_zero()) return {E, cross(normal, E) / norm(normal)};
+  }
+  throw std::invalid_argument(
+      "a normal that changes with the coordinates must be perpendicular to one of E1, E2, E3 "
+      "throughout (a cylinder about that axis), so that its tangents E_k and n x E_k are defined "
+      "everywhere; give the normal as numbers for a plane");
+}
+
 }  // namespace
 
 std::vector<Constraint> rolling_contact(const System& system, const std::string& name,
@@ -85,7 +104,7 @@ std::vector<Constraint> rolling_contact(const System& system, const std::string&
   const VectorExpr v_P = system.center_velocity(body) + cross(system.angular_velocity(body), arm);
   std::vector<Constraint> rows;
   int k = 1;
-  for (const VectorExpr& t : perpendiculars(unit_numeric(normal, "normal"))) {
+  for (const VectorExpr& t : surface_tangents(normal)) {
     // v_P · t = 0: f = t, h = (x_P − x̄) × t
     Constraint c = row(name, k++, dot(v_P, t), where, Constraint::Kind::velocity);
     c.loads.push_back({body, t, cross(arm, t)});

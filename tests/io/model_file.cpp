@@ -805,8 +805,16 @@ TEST(ModelFileErrors, BodyJointsAndLoads) {
                {"the angle of a joint", "Euler angles"});
   const std::string no_normal = "  - {name: r, rolling: {body: B, at: B.center}}";
   expect_error(constraint(no_normal), 7, column_of(no_normal, "{body"), {"normal:"});
-  const std::string bent = "  - {name: r, rolling: {body: B, at: B.center, normal: [0, 0, m]}}";
-  expect_error(constraint(bent), 7, column_of(bent, "[0"), {"vector of numbers"});
+  // a curved surface that is not a cylinder about E1, E2 or E3, one that moves, one with no normal
+  const std::string bent = "  - {name: r, rolling: {body: B, at: B.center, normal: [1, x, x]}}";
+  expect_error(constraint(bent), 7, column_of(bent, "[1"), {"perpendicular to one of E1, E2, E3"});
+  const std::string moving_surface =
+      "  - {name: r, rolling: {body: B, at: B.center, normal: [0, 1, t]}}";
+  expect_error(constraint(moving_surface), 7, column_of(moving_surface, "[0, 1"),
+               {"cannot depend on t"});
+  const std::string no_direction =
+      "  - {name: r, rolling: {body: B, at: B.center, normal: [0, 0, 0]}}";
+  expect_error(constraint(no_direction), 7, column_of(no_direction, "[0"), {"cannot be zero"});
   const std::string gradient = "  - gravity_gradient: {on: B}";
   expect_error(force(gradient), 7, column_of(gradient, "{on"), {"GM:"});
 }

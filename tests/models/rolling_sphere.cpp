@@ -1,10 +1,13 @@
-// A uniform sphere rolling without slipping: down an incline (§9.8, (9.26)) and on a turntable
-// (Exercise 9.10, (9.33)–(9.34)), described by its centre and Euler parameters with the rolling
-// constraints v_P = 0 or v_P = Ω E3 × x̄ as velocity constraints.
+// A uniform sphere rolling without slipping: down an incline (§9.8, (9.26)), on a turntable
+// (Exercise 9.10, (9.33)–(9.34)) and inside a pipe (a `rolling:` contact whose normal changes with
+// the coordinates), described by its centre and Euler parameters with the rolling constraints
+// v_P = 0 or v_P = Ω E3 × x̄ as velocity constraints.
 #include <cmath>
 #include <complex>
 
 #include "support/model_run.hpp"
+#include "unidyn/integrate/dormand_prince.hpp"
+#include "unidyn/integrate/driver.hpp"
 
 namespace unidyn {
 namespace {
@@ -65,6 +68,42 @@ TEST(RollingSphere, SlidesThenRolls) {
       EXPECT_NEAR(run.at(i, "lambda(table)"), 9.81, 1e-9) << t;
     }
   }
+}
+
+// Inside a pipe of radius R about E2, the centre at angle θ from the lowest line moves on a circle
+// of radius R − r, and rolling (v̄ + ω × r n = 0 at the contact x̄ + r n) gives the sphere
+// ω = (R − r) θ̇/r E2: T = ½ (7/5) m (R − r)² θ̇², so (7/5)(R − r) θ̈ = −g sin θ, integrated here by
+// hand; the wall pushes with m g cos θ + m (R − r) θ̇² and the sphere stays in its plane.
+TEST(RollingSphere, InsideAPipeAsItsReducedEquation) {
+  const test::ModelRun run = test::run_model("sphere-in-pipe");
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const double m = 1, g = 9.81, r = 0.2, R = 1, rho = R - r;
+  DormandPrinceOptions options;
+  options.rtol = 1e-12;
+  options.atol = 1e-14;
+  DormandPrince54 reduced(
+      [&](double, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
+        dydt << y[1], -5 * g / (7 * rho) * std::sin(y[0]);
+      },
+      options);
+  std::vector<Eigen::VectorXd> expected;
+  IntegrationCallbacks callbacks;
+  callbacks.output = [&](double, const Eigen::VectorXd& y) { expected.push_back(y); };
+  Eigen::VectorXd y0(2);
+  y0 << 0.3, 0.0;
+  ASSERT_TRUE(integrate(reduced, 0, y0, 3, 0.01, callbacks).ok);
+  ASSERT_EQ(expected.size(), run.rows.size());
+  double lowest = 1;
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    const double t = run.at(i, "t"), theta = expected[i][0], rate = expected[i][1];
+    EXPECT_NEAR(run.at(i, "theta"), theta, 1e-9) << t;
+    EXPECT_NEAR(run.at(i, "w2"), rho * rate / r, 1e-8) << t;
+    EXPECT_NEAR(run.at(i, "wall_push"), m * g * std::cos(theta) + m * rho * rate * rate, 1e-8) << t;
+    EXPECT_NEAR(run.at(i, "y"), 0.0, 1e-12) << t;
+    lowest = std::min(lowest, std::abs(theta));
+  }
+  EXPECT_LT(lowest, 0.02);  // it swung through the bottom
+  EXPECT_LT(run.summary.energy_relative_drift, 1e-11);
 }
 
 }  // namespace

@@ -40,11 +40,14 @@ std::vector<Constraint> ball_joint(const System& system, const std::string& name
                                    const JointEnd& first, const JointEnd& second,
                                    const SourcePosition& where);
 
-// Rolling without slip of body B on a fixed surface with normal n (a vector of numbers) at the
-// point of contact x_P (book §8.6, (8.21), (10.27)): the velocity rows name_1, name_2
+// Rolling without slip of body B on a fixed surface with normal n at the point of contact x_P
+// (book §8.6, (8.21), (10.27)): the velocity rows name_1, name_2
 //   (v̄ + ω × (x_P − x̄)) · t_j = 0,   t_j ⊥ n,
 // with f = t_j and h = (x_P − x̄) × t_j (8.22): the friction force at P and its moment. The normal
-// contact is a position constraint of its own.
+// contact is a position constraint of its own. n is a vector of numbers (a plane: t_j complete
+// n/‖n‖ to an orthonormal triad) or an expression of the coordinates perpendicular to a basis
+// vector E_k throughout (a cylinder about E_k, e.g. rolling inside a pipe: t_1 = E_k,
+// t_2 = n × E_k/‖n‖). Throws std::invalid_argument for any other normal.
 std::vector<Constraint> rolling_contact(const System& system, const std::string& name,
                                         std::size_t body, const VectorExpr& contact,
                                         const VectorExpr& normal, const SourcePosition& where);
