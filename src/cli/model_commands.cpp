@@ -133,6 +133,49 @@ System command_system(const ModelCommands& c, const System& loaded) {
   return std::move(reduction.system);
 }
 
+// The initial state before its completion: of the system run, and with --reduced, when a value or
+// rate is given for a coordinate that approach II eliminated, of the full model too, whose given
+// values (the eliminated one's included) the completion keeps. Bad input (an unknown --set name)
+// throws here, before anything is printed.
+struct CommandStart {
+  SimulationStart start;
+  std::optional<SimulationStart> full;
+};
+CommandStart command_start(const ModelCommands& c, const System& full, const System& system) {
+  const auto sets = parse_sets(c.sets);
+  if (c.reduced) {
+    SimulationStart full_start = initial_state(full, sets);
+    if (gives_eliminated_values(full, full_start, system)) {
+      if (c.project) {
+        throw std::invalid_argument(
+            "--project cannot keep a value given for a coordinate that --reduced eliminates: "
+            "drop one of them");
+      }
+      SimulationStart start = restricted_start(full, full_start, system);
+      return {std::move(start), std::move(full_start)};
+    }
+  }
+  return {initial_state(system, sets), std::nullopt};
+}
+
+// Completes the start (integrate/initial_state.hpp) and returns what was computed: with the full
+// model's start, from all of its constraints (the eliminated ones included), then restricted to
+// the reduced coordinates. Throws InitialStateError naming a violated constraint.
+std::vector<std::string> complete_command_start(CommandStart& s, const System& full,
+                                                const System& system,
+                                                const CompiledSystem& compiled) {
+  std::vector<std::string> computed;
+  if (s.full) {
+    const CompiledSystem full_compiled(full, kane_equations(full));
+    computed = complete_initial_state(full, full_compiled, *s.full);
+    s.start = restricted_start(full, *s.full, system);
+  }
+  for (auto& line : complete_initial_state(system, compiled, s.start)) {
+    computed.push_back(std::move(line));
+  }
+  return computed;
+}
+
 EquationFormat parse_format(const std::string& format) {
   if (format == "text") return EquationFormat::text;
   if (format == "latex") return EquationFormat::latex;
@@ -191,7 +234,8 @@ constexpr double kInitialResidualTolerance = 1e-9;
 int run_check(const ModelCommands& c, const CommandModel& model) {
   const System system = command_system(c, model.system);
   // the initial state first: one that is bad input stops before anything is printed
-  SimulationStart start = initial_state(system, parse_sets(c.sets));
+  CommandStart initial = command_start(c, model.system, system);
+  SimulationStart& start = initial.start;
   const EquationsOfMotion lagrange = lagrange_equations(system);
   const NewtonEquations newton = newton_equations(system);
   const EquivalenceReport report = check_equivalence(system, lagrange, newton);
@@ -212,7 +256,8 @@ int run_check(const ModelCommands& c, const CommandModel& model) {
   CompiledSystemData data = compiled.make_data();
   bool state_ok = true;
   try {
-    const std::vector<std::string> computed = complete_initial_state(system, compiled, start);
+    const std::vector<std::string> computed =
+        complete_command_start(initial, model.system, system, compiled);
     if (!computed.empty()) {
       fmt::print("  initial values computed from the constraints: {}\n",
                  printable(fmt::format("{}", fmt::join(computed, ", "))));
@@ -360,7 +405,8 @@ void write_run_figures(std::FILE* out, const System& system, const SimulationSum
 
 int run_simulate(const ModelCommands& c, const CommandModel& model) {
   const System system = command_system(c, model.system);
-  SimulationStart start = initial_state(system, parse_sets(c.sets));
+  CommandStart initial = command_start(c, model.system, system);
+  const SimulationStart& start = initial.start;
   const SimulationOptions options = options_for(system, c);
   const auto clock_start = std::chrono::steady_clock::now();
   CompileOptions compile_options;
@@ -377,7 +423,8 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
   // the values given stay; the others come from the constraints (or, with --project, every value
   // as given and then projected onto the constraints)
   const std::vector<std::string> computed =
-      c.project ? std::vector<std::string>{} : complete_initial_state(system, compiled, start);
+      c.project ? std::vector<std::string>{}
+                : complete_command_start(initial, model.system, system, compiled);
 
   const std::string path = c.output.empty() ? "-" : c.output;
   std::optional<CsvWriter> csv;

@@ -220,4 +220,33 @@ std::vector<std::string> complete_initial_state(const System& system,
   return computed;
 }
 
+bool gives_eliminated_values(const System& full, const SimulationStart& full_start,
+                             const System& reduced) {
+  const auto& q = full.coordinates();
+  for (std::size_t j = 0; j < q.size(); ++j) {
+    const bool eliminated = !reduced.find_coordinate(q[j].name);
+    if (eliminated && (full_start.q_given[j] || full_start.qdot_given[j])) return true;
+  }
+  return false;
+}
+
+SimulationStart restricted_start(const System& full, const SimulationStart& full_start,
+                                 const System& reduced) {
+  SimulationStart start;
+  start.parameters = full_start.parameters;
+  start.computed = full_start.computed;
+  start.t0 = full_start.t0;
+  const auto& q = reduced.coordinates();
+  start.q.resize(static_cast<Eigen::Index>(q.size()));
+  start.qdot.resize(static_cast<Eigen::Index>(q.size()));
+  for (std::size_t j = 0; j < q.size(); ++j) {
+    const auto from = static_cast<Eigen::Index>(*full.find_coordinate(q[j].name));
+    start.q[static_cast<Eigen::Index>(j)] = full_start.q[from];
+    start.qdot[static_cast<Eigen::Index>(j)] = full_start.qdot[from];
+  }
+  start.q_given.assign(q.size(), true);
+  start.qdot_given.assign(q.size(), true);
+  return start;
+}
+
 }  // namespace unidyn

@@ -163,12 +163,15 @@ TEST(HonestSummaries, GimbalLockAtTheStart) {
 
 // The values given stay; those left out come from the constraints and the summary lists them; given
 // values that violate a constraint are bad input (or, with --project, all are moved as before).
+// An Atwood machine: y1 + y2 = −L.
+const std::string kAtwood =
+    "unidyn: 1\nparameters: {m1: 1, m2: 2, g: 9.81, L: 3}\ncoordinates: [y1, y2]\nparticles:\n"
+    "  P1: {mass: m1, position: [0, y1, 0]}\n  P2: {mass: m2, position: [1, y2, 0]}\n"
+    "forces:\n  - gravity: -g*E2\nconstraints:\n  - {name: string, position: -y1 - y2 - L}\n";
+
 TEST(HonestSummaries, InitialValuesGivenStay) {
   const std::string path = temp_path("atwood.yaml");
-  const std::string model =
-      "unidyn: 1\nparameters: {m1: 1, m2: 2, g: 9.81, L: 3}\ncoordinates: [y1, y2]\nparticles:\n"
-      "  P1: {mass: m1, position: [0, y1, 0]}\n  P2: {mass: m2, position: [1, y2, 0]}\n"
-      "forces:\n  - gravity: -g*E2\nconstraints:\n  - {name: string, position: -y1 - y2 - L}\n";
+  const std::string& model = kAtwood;
   write_file(path, model + "initial: {y1: -1, der(y1): 0.5}\n");
   const std::string csv = temp_path("atwood.csv");
   const Outcome r = run("simulate '" + path + "' --set y1=-0.9 --t-end 0.1 -o '" + csv + "'");
@@ -227,6 +230,46 @@ TEST(HonestSummaries, EventsHaveTheirOwnRows) {
   }
   EXPECT_EQ(on_grid, 201u);
   EXPECT_EQ(found, impacts.size());
+}
+
+// --reduced eliminates y1 by the string (approach II): the value and rate given for y1 are kept,
+// through the full model's start (y2 and its rate computed from the string), not dropped; values
+// that contradict the string are bad input, and --project, which would move the given y1, is
+// refused.
+TEST(HonestSummaries, ReducedKeepsTheEliminatedCoordinatesValue) {
+  const std::string path = temp_path("atwood-reduced.yaml");
+  write_file(path, kAtwood + "initial: {y1: -0.9, der(y1): 0.5}\n");
+  const std::string csv = temp_path("atwood-reduced.csv");
+  const Outcome r = run("simulate '" + path + "' --reduced --t-end 0.1 -o '" + csv + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.err, "eliminated y1 by constraint string")) << r.err;
+  EXPECT_TRUE(contains(r.out,
+                       "initial values computed from the constraints: y2 = -2.1, "
+                       "der(y2) = -0.5"))
+      << r.out;
+  const Csv rows = parse_csv(read_file(csv));
+  EXPECT_EQ(rows.columns.size(), 4u) << rows.header;  // t, y2, der(y2), energy
+  EXPECT_NEAR(rows.at(0, "y2"), -2.1, 1e-15);
+  EXPECT_NEAR(rows.at(0, "der(y2)"), -0.5, 1e-15);
+  // with the full equations, the same motion
+  const std::string full_csv = temp_path("atwood-full.csv");
+  ASSERT_EQ(run("simulate '" + path + "' --t-end 0.1 -o '" + full_csv + "'").status, 0);
+  const Csv full = parse_csv(read_file(full_csv));
+  ASSERT_EQ(full.rows.size(), rows.rows.size());
+  for (std::size_t i = 0; i < rows.rows.size(); ++i) {
+    EXPECT_NEAR(rows.at(i, "y2"), full.at(i, "y2"), 1e-12) << i;
+  }
+  // bad input (status 2, nothing on standard output) after the approach-II notes
+  const Outcome conflict = run("simulate '" + path + "' --reduced --set y2=-2 -o /dev/null");
+  EXPECT_EQ(conflict.status, 2) << conflict.err;
+  EXPECT_TRUE(conflict.out.empty()) << conflict.out;
+  EXPECT_TRUE(contains(conflict.err, "constraint 'string' (Psi = -0.1")) << conflict.err;
+  const Outcome check = run("check '" + path + "' --reduced --set y2=-2");
+  EXPECT_EQ(check.status, 1) << check.out;
+  EXPECT_TRUE(contains(check.out, "check FAILED")) << check.out;
+  const Outcome projected = run("simulate '" + path + "' --reduced --project -o /dev/null");
+  EXPECT_EQ(projected.status, 2) << projected.err;
+  EXPECT_TRUE(contains(projected.err, "--project cannot keep")) << projected.err;
 }
 
 }  // namespace

@@ -38,4 +38,14 @@ std::vector<std::string> complete_initial_state(const System& system,
                                                 const CompiledSystem& compiled,
                                                 SimulationStart& start);
 
+// Whether the start of `full` gives a value or rate of a coordinate that `reduced` (its approach-II
+// form) eliminated.
+bool gives_eliminated_values(const System& full, const SimulationStart& full_start,
+                             const System& reduced);
+
+// Approach II's start from the full model's completed start: each reduced coordinate's value and
+// rate taken from it (by name), all of them given.
+SimulationStart restricted_start(const System& full, const SimulationStart& full_start,
+                                 const System& reduced);
+
 }  // namespace unidyn
