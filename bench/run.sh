@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-bash scripts/setup.sh
+bash scripts/setup.sh bench
 cmake -S . -B build-bench -G Ninja -DCMAKE_BUILD_TYPE=Release -DUNIDYN_BUILD_TESTS=OFF \
   -DUNIDYN_BUILD_BENCH=ON
 cmake --build build-bench

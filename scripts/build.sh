@@ -8,16 +8,17 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 build_dir=build
-options=(-DCMAKE_BUILD_TYPE=Release)
+options=(-DCMAKE_BUILD_TYPE=Release -DUNIDYN_BUILD_TESTS=ON -DUNIDYN_BUILD_BENCH=ON)
 targets=()
 for argument in "$@"; do
   case "$argument" in
     --sanitize)
       build_dir=build-sanitize
       options=(-DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g" -DUNIDYN_SANITIZE=ON
-               -DUNIDYN_BUILD_BENCH=OFF)
+               -DUNIDYN_BUILD_TESTS=ON -DUNIDYN_BUILD_BENCH=OFF)
       ;;
-    --only-cli) targets=(--target unidyn) ;;
+    # without the tests' and benchmarks' packages (scripts/setup.sh run): not configured at all
+    --only-cli) targets=(--target unidyn) options+=(-DUNIDYN_BUILD_TESTS=OFF -DUNIDYN_BUILD_BENCH=OFF) ;;
     *) echo "build.sh: unknown option $argument" >&2; exit 2 ;;
   esac
 done

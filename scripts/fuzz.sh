@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 seconds="${1:-30}"
-bash scripts/setup.sh
+bash scripts/setup.sh fuzz
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Debug \
   "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g" -DUNIDYN_FUZZ=ON -DUNIDYN_BUILD_TESTS=OFF \
   -DUNIDYN_BUILD_BENCH=OFF >/dev/null

@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-bash scripts/setup.sh
+bash scripts/setup.sh run
 bash scripts/build.sh --only-cli
 mkdir -p out
 model=spherical-pendulum

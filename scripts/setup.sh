@@ -1,21 +1,34 @@
 #!/usr/bin/env bash
-# Installs every build, test and benchmark dependency of unidyn from Debian packages.
-# Run as root on Debian 12 (bookworm). Running it again is harmless.
+# Installs the Debian packages unidyn needs. Run as root on Debian 12 (bookworm); running it again
+# is harmless. Usage: scripts/setup.sh [run|test|fuzz|bench|all]   (default all)
+#   run     the `unidyn` command: compilers, CMake, Ninja and the libraries (scripts/run.sh)
+#   test    run + GoogleTest, Google Benchmark and the benchmark peers the test build compiles
+#   fuzz    run + clang with libFuzzer (scripts/fuzz.sh)
+#   bench   test + Python with SymPy for the side-by-side runs (bench/run.sh)
+#   all     every one of these and clang-format
 set -euo pipefail
 
-packages=(
-  # build tools
-  build-essential cmake ninja-build pkg-config clang-format
+run=(
+  build-essential cmake ninja-build pkg-config
   # libraries (DESIGN.md "Dependencies")
   libeigen3-dev libginac-dev libcln-dev libsundials-dev libyaml-cpp-dev
   libcli11-dev libfmt-dev libssl-dev
-  # tests and micro benchmarks
-  googletest libgtest-dev libgmock-dev libbenchmark-dev
-  # fuzzing (scripts/fuzz.sh): clang with libFuzzer
-  clang libclang-rt-14-dev
-  # side-by-side benchmark peers (bench/)
-  libmujoco-dev libsimbody-dev python3 python3-sympy
 )
+# tests and micro benchmarks, and the peers of bench/ (compiled with them)
+test=(googletest libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev libsimbody-dev)
+# fuzzing: clang with libFuzzer
+fuzz=(clang libclang-rt-14-dev)
+# the side-by-side derivations against SymPy
+bench=(python3 python3-sympy)
+
+case "${1:-all}" in
+  run) packages=("${run[@]}") ;;
+  test) packages=("${run[@]}" "${test[@]}") ;;
+  fuzz) packages=("${run[@]}" "${fuzz[@]}") ;;
+  bench) packages=("${run[@]}" "${test[@]}" "${bench[@]}") ;;
+  all) packages=("${run[@]}" "${test[@]}" "${fuzz[@]}" "${bench[@]}" clang-format) ;;
+  *) echo "setup.sh: unknown group '$1' (expected run, test, fuzz, bench or all)" >&2; exit 2 ;;
+esac
 
 # Skip apt entirely when everything is already there (fast re-runs, offline re-runs).
 missing=()

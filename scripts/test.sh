@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-bash scripts/setup.sh
+bash scripts/setup.sh test
 build_dir=build
 if [[ "${1:-}" == "--sanitize" ]]; then build_dir=build-sanitize; fi
 bash scripts/build.sh "$@"
