@@ -7,6 +7,7 @@
 #include <cstring>
 #include <exception>
 
+#include "fixed_layout.hpp"
 #include "model_commands.hpp"
 #include "rotation_command.hpp"
 #include "unidyn/rotation/errors.hpp"
@@ -18,6 +19,8 @@
 #endif
 
 int main(int argc, char** argv) {
+  // the same process layout in every run: equal input, byte-identical output
+  unidyn::cli::use_fixed_layout(argv);
   CLI::App app{"unidyn: engineering dynamics after O'Reilly, Intermediate Dynamics for Engineers"};
   app.require_subcommand(0, 1);
   app.set_version_flag("--version", "unidyn " UNIDYN_VERSION);

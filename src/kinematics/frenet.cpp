@@ -1,6 +1,7 @@
 // The Frenet triad of a space curve.
 #include "unidyn/kinematics/frenet.hpp"
 
+#include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
@@ -8,7 +9,7 @@ namespace unidyn {
 namespace {
 
 Expr simplified(const Expr& e) {
-  return GiNaC::normal(expand_within_budget(e, "the Frenet triad"));
+  return canonical_normal(expand_within_budget(e, "the Frenet triad"));
 }
 
 VectorExpr simplified(const VectorExpr& v) {

@@ -204,10 +204,13 @@ std::shared_ptr<const NativeLibrary> NativeLibrary::build(
   std::string compiler = options.compiler;
   if (compiler.empty()) compiler = environment("CXX");
   if (compiler.empty()) compiler = "c++";
-  // The key: everything that determines the library.
-  const std::string key_text = "unidyn native code v2\nunidyn " UNIDYN_VERSION "\ncompiler " +
+  // The key: everything that determines the library — the source itself too, so that a library
+  // is only ever the one this process would compile (another build of unidyn may order the same
+  // equations' operations otherwise, and its numbers would differ from the tape's in their last
+  // bits).
+  const std::string key_text = "unidyn native code v3\nunidyn " UNIDYN_VERSION "\ncompiler " +
                                compiler_identity(compiler) + "\nflags " + options.flags + "\n" +
-                               identity.signature + "key\n" +
+                               identity.signature + "source " + identity.source + "\nkey\n" +
                                (options.key.empty() ? body : options.key);
   identity.key = sha256_hex(key_text);
   const std::string name = options.entry_name ? options.entry_name(key_text) : identity.key;

@@ -6,6 +6,8 @@
 #include <limits>
 #include <unordered_map>
 
+#include "unidyn/symbolic/canonical_text.hpp"
+
 namespace unidyn {
 namespace {
 
@@ -145,7 +147,7 @@ Expr expand_within_budget(const Expr& e, std::string_view what) {
 
 Expr normal_within_budget(const Expr& e, std::string_view what) {
   check_expansion_budget(e, what);
-  return GiNaC::normal(e);
+  return canonical_normal(e);
 }
 
 }  // namespace unidyn

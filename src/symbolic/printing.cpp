@@ -1,23 +1,36 @@
 // Simplification for display and printing.
 #include "unidyn/symbolic/printing.hpp"
 
+#include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 
 #include <map>
 #include <set>
-#include <sstream>
 
 namespace unidyn {
 namespace {
 
-// Every distinct x appearing as sin(x) or cos(x), in GiNaC's canonical order.
+// Expressions in the canonical order (symbolic/canonical_text.hpp), not GiNaC's, which changes
+// from run to run: what is made from them in turn (symbols, reductions, ties) is then the same.
+struct CanonicalLess {
+  bool operator()(const Expr& a, const Expr& b) const { return canonical_less(a, b); }
+};
+
+// Every distinct x appearing as sin(x) or cos(x), in the canonical order.
 std::vector<Expr> trig_arguments(const Expr& e) {
   GiNaC::exset found;
   e.find(GiNaC::sin(GiNaC::wild()), found);
   e.find(GiNaC::cos(GiNaC::wild()), found);
-  std::set<Expr, GiNaC::ex_is_less> arguments;
+  std::set<Expr, CanonicalLess> arguments;
   for (const auto& f : found) arguments.insert(f.op(0));
   return {arguments.begin(), arguments.end()};
+}
+
+// Of two equal expressions, whether `candidate` is the better: smaller, or as small and first in
+// the canonical order (so that the choice never depends on GiNaC's order).
+bool better(const Expr& candidate, const Expr& best) {
+  const std::size_t a = expression_size(candidate), b = expression_size(best);
+  return a < b || (a == b && canonical_less(candidate, best));
 }
 
 // An expanded p, polynomial in v, with every v^k (k ≥ 2) replaced by v^(k−2) (1 − w²): its
@@ -56,9 +69,10 @@ Expr canonical_trig_form(const Expr& p) {
 // (so √u and 1/√u of one u, written two ways, become r and 1/r), recording r → b^(1/q) in `back`:
 // the reduction modulo s² + c² − 1 then sees polynomials.
 Expr hide_radicals(const Expr& e, GiNaC::exmap& back) {
-  GiNaC::exset found;
-  e.find(GiNaC::pow(GiNaC::wild(0), GiNaC::wild(1)), found);
-  std::map<Expr, GiNaC::symbol, GiNaC::ex_is_less> roots;
+  GiNaC::exset powers;
+  e.find(GiNaC::pow(GiNaC::wild(0), GiNaC::wild(1)), powers);
+  const std::set<Expr, CanonicalLess> found(powers.begin(), powers.end());
+  std::map<Expr, GiNaC::symbol, CanonicalLess> roots;
   GiNaC::exmap hide;
   for (const Expr& power : found) {
     const Expr exponent = power.op(1);
@@ -103,9 +117,7 @@ Expr simplify(const Expr& e) {
   check_expansion_budget(e, "simplifying");
   Expr best = expand_within_budget(inside(e), "simplifying");
   // A rational function is brought to one fraction only when that is smaller.
-  if (const Expr normal = GiNaC::normal(best); expression_size(normal) < expression_size(best)) {
-    best = normal;
-  }
+  if (const Expr normal = canonical_normal(best); better(normal, best)) best = normal;
   // sin²x + cos²x = 1: with s = sin x, c = cos x for each argument, numerator and denominator are
   // polynomials in the s and c; reduced modulo s² + c² − 1 in s or in c they take a unique form,
   // so an expression that is zero becomes 0 whatever order GiNaC keeps its terms in. Each argument
@@ -124,7 +136,7 @@ Expr simplify(const Expr& e) {
     back[s.back()] = GiNaC::sin(x);
     back[c.back()] = GiNaC::cos(x);
   }
-  const Expr fraction = GiNaC::numer_denom(GiNaC::normal(best.subs(to_symbols)));
+  const Expr fraction = GiNaC::numer_denom(canonical_normal(best.subs(to_symbols)));
   const Expr numerator = expand_within_budget(fraction.op(0), "simplifying"),
              denominator = expand_within_budget(fraction.op(1), "simplifying");
   const std::size_t n = arguments.size();
@@ -138,9 +150,9 @@ Expr simplify(const Expr& e) {
       num = reduce_modulo_unit_circle(num, v, w);
       den = reduce_modulo_unit_circle(den, v, w);
     }
-    const Expr reduced = GiNaC::normal(num / den).subs(back);
+    const Expr reduced = canonical_normal(num / den).subs(back);
     for (const Expr& candidate : {reduced, expand_within_budget(reduced, "simplifying")}) {
-      if (expression_size(candidate) < expression_size(best)) best = candidate;
+      if (better(candidate, best)) best = candidate;
     }
   }
   return best.subs(radicals);
@@ -153,15 +165,11 @@ Expr collect_in(const Expr& e, const std::vector<Expr>& symbols) {
 }
 
 std::string to_text(const Expr& e) {
-  std::ostringstream out;
-  out << e;
-  return out.str();
+  return canonical_text(e);
 }
 
 std::string to_latex(const Expr& e) {
-  std::ostringstream out;
-  out << GiNaC::latex << e;
-  return out.str();
+  return canonical_latex(e);
 }
 
 }  // namespace unidyn

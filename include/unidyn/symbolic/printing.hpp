@@ -13,11 +13,14 @@ std::size_t expression_size(const Expr& e);
 
 // Expanded, with sin²x + cos²x = 1 applied wherever it makes the expression smaller (each
 // argument x tried both ways, sin² → 1 − cos² and cos² → 1 − sin²), rational functions normalised.
+// Every choice (the order of the arguments, ties in size, the sign of a fraction) follows the
+// canonical order, so the result is the same expression in every run.
 Expr simplify(const Expr& e);
 
 // Collects an expression in the given symbols (e.g. the accelerations) after simplifying.
 Expr collect_in(const Expr& e, const std::vector<Expr>& symbols);
 
+// Text and LaTeX in the canonical order (symbolic/canonical_text.hpp): the same in every run.
 std::string to_text(const Expr& e);
 std::string to_latex(const Expr& e);
 
