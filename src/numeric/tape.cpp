@@ -21,8 +21,6 @@
 #include <unordered_map>
 #include <utility>
 
-#include "unidyn/symbolic/canonical_text.hpp"
-
 namespace unidyn {
 
 namespace {
@@ -598,9 +596,7 @@ void TapeWorkspace::reserve(const Tape& tape) {
 }
 
 Tape Tape::compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs) {
-  // Pass 1, one output at a time so that errors can say which; each in one sign convention
-  // (symbolic/canonical_text.hpp), so that the operations, and every rounding, are the same
-  // whatever form GiNaC gave it in this run.
+  // Pass 1, one output at a time so that errors can say which.
   Builder builder(inputs);
   std::vector<Value> values;
   for (std::size_t k = 0; k < outputs.size(); ++k) {
