@@ -25,6 +25,7 @@
 #include "unidyn/io/csv.hpp"
 #include "unidyn/io/equation_report.hpp"
 #include "unidyn/io/model_file.hpp"
+#include "unidyn/io/textbook_equations.hpp"
 #include "unidyn/kinematics/integrability.hpp"
 #include "unidyn/numeric/compiled_system.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
@@ -209,11 +210,19 @@ void write_integrability(const System& system, EquationFormat format) {
 int run_derive(const ModelCommands& c, const CommandModel& model) {
   const System system = command_system(c, model.system);
   const EquationFormat format = parse_format(c.format);
+  if (c.form != "textbook" && c.form != "matrix") {
+    throw std::invalid_argument("--form must be textbook or matrix");
+  }
   if (c.method == "lagrange" || c.method == "kane") {
-    // M q̈ = f + Aᵀλ by Lagrange's equations, or through partial velocities (the same M and f)
-    write_lagrange(std::cout, system,
-                   c.method == "kane" ? kane_equations(system) : lagrange_equations(system),
-                   format);
+    // M q̈ = f + Aᵀλ by Lagrange's equations, or through partial velocities (the same M and f):
+    // as the book prints them, or as the matrices
+    const EquationsOfMotion eq =
+        c.method == "kane" ? kane_equations(system) : lagrange_equations(system);
+    if (c.form == "textbook" && format != EquationFormat::json) {
+      write_textbook_lagrange(std::cout, system, eq, format);
+    } else {
+      write_lagrange(std::cout, system, eq, format);
+    }
     if (format != EquationFormat::json) write_integrability(system, format);
   } else if (c.method == "newton-euler") {
     write_newton(std::cout, system, newton_equations(system), format);
@@ -539,6 +548,11 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.derive->add_option("--method", c.method, "lagrange | kane | second-form | newton-euler")
       ->capture_default_str();
   c.derive->add_option("--format", c.format, "text | latex | json")->capture_default_str();
+  c.derive
+      ->add_option("--form", c.form,
+                   "textbook (each equation as the book prints it: M q'' terms, then products of "
+                   "rates, then the rest) | matrix (M q'' = f + A^T lambda)")
+      ->capture_default_str();
   c.derive->add_flag("--reduced", c.reduced,
                      "approach II: eliminate the constraints that can be solved for a coordinate");
 

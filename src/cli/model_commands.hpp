@@ -16,6 +16,7 @@ struct ModelCommands {
   std::string model;
   std::string method = "lagrange";
   std::string format = "text";
+  std::string form = "textbook";
   std::string output;
   std::vector<std::string> sets;
   double t_end = 0, output_step = 0, rtol = 0;

@@ -3,6 +3,7 @@
 
 #include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
+#include "unidyn/symbolic/trig_identities.hpp"
 
 #include <map>
 #include <set>
@@ -15,16 +16,6 @@ namespace {
 struct CanonicalLess {
   bool operator()(const Expr& a, const Expr& b) const { return canonical_less(a, b); }
 };
-
-// Every distinct x appearing as sin(x) or cos(x), in the canonical order.
-std::vector<Expr> trig_arguments(const Expr& e) {
-  GiNaC::exset found;
-  e.find(GiNaC::sin(GiNaC::wild()), found);
-  e.find(GiNaC::cos(GiNaC::wild()), found);
-  std::set<Expr, CanonicalLess> arguments;
-  for (const auto& f : found) arguments.insert(f.op(0));
-  return {arguments.begin(), arguments.end()};
-}
 
 // Of two equal expressions, whether `candidate` is the better: smaller, or as small and first in
 // the canonical order (so that the choice never depends on GiNaC's order).

@@ -163,17 +163,29 @@ TEST(CliModels, DeriveText) {
     EXPECT_TRUE(contains(U[0], part)) << part << " in " << U[0];
   }
   EXPECT_FALSE(contains(U[0], "theta")) << U[0];
-  // [phi] m L² φ'' = m L² sin φ cos φ θ'² + m g L sin φ; [theta] m L² sin² φ θ'' = −2 ...
-  const std::vector<std::string> phi = lines_starting(r.out, "  [phi]  ");
-  const std::vector<std::string> theta = lines_starting(r.out, "  [theta]  ");
-  ASSERT_EQ(phi.size(), 1u) << r.out;
-  ASSERT_EQ(theta.size(), 1u) << r.out;
+  // the textbook form: m L² φ'' − m L² sin φ cos φ θ'² − m g L sin φ = 0 (φ from the upward
+  // vertical) and m L² sin²φ θ'' + 2 m L² sin φ cos φ φ' θ' = 0
+  EXPECT_EQ(lines_starting(r.out, "  [phi]  "),
+            std::vector<std::string>{
+                "  [phi]  L^2*m*phi'' - L^2*cos(phi)*m*sin(phi)*theta'^2 - L*g*m*sin(phi) = 0"});
+  EXPECT_EQ(lines_starting(r.out, "  [theta]  "),
+            std::vector<std::string>{"  [theta]  L^2*m*sin(phi)^2*theta'' + "
+                                     "2*L^2*cos(phi)*m*phi'*sin(phi)*theta' = 0"});
+  // the matrix form: [phi] m L² φ'' = m L² sin φ cos φ θ'² + m g L sin φ; [theta] m L² sin² φ θ''
+  // = −2 ...
+  const Outcome matrix = run("derive spherical-pendulum --form matrix");
+  ASSERT_EQ(matrix.status, 0) << matrix.err;
+  const std::vector<std::string> phi = lines_starting(matrix.out, "  [phi]  ");
+  const std::vector<std::string> theta = lines_starting(matrix.out, "  [theta]  ");
+  ASSERT_EQ(phi.size(), 1u) << matrix.out;
+  ASSERT_EQ(theta.size(), 1u) << matrix.out;
   const std::string phi_lhs = phi[0].substr(0, phi[0].find(" = "));
   const std::string theta_lhs = theta[0].substr(0, theta[0].find(" = "));
   EXPECT_TRUE(contains(phi_lhs, "phi''") && !contains(phi_lhs, "theta''")) << phi[0];
   EXPECT_TRUE(contains(theta_lhs, "theta''") && !contains(theta_lhs, "phi''")) << theta[0];
   EXPECT_TRUE(contains(phi[0].substr(phi_lhs.size()), "g")) << phi[0];
   EXPECT_TRUE(contains(theta[0].substr(theta_lhs.size()), "-2*")) << theta[0];
+  expect_bad_input(run("derive spherical-pendulum --form pretty"), "--form pretty");
 }
 
 // `derive --format latex`: an aligned block with \ddot{\phi} and \ddot{\theta}.

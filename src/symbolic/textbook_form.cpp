@@ -1,0 +1,132 @@
+// Coefficients in their shortest printed form, sums grouped by monomials.
+#include "unidyn/symbolic/textbook_form.hpp"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+
+#include "unidyn/symbolic/canonical_text.hpp"
+#include "unidyn/symbolic/common_factor.hpp"
+#include "unidyn/symbolic/expansion_budget.hpp"
+#include "unidyn/symbolic/printing.hpp"
+#include "unidyn/symbolic/trig_identities.hpp"
+
+namespace unidyn {
+namespace {
+
+using GiNaC::is_exactly_a;
+
+// Collected in the sines and cosines (Σ c_k × their monomial k), each c_k and then the whole with
+// its common factor out.
+Expr tidy(const Expr& e) {
+  GiNaC::lst trig;
+  for (const Expr& x : trig_arguments(e)) {
+    trig.append(GiNaC::sin(x));
+    trig.append(GiNaC::cos(x));
+  }
+  const Expr collected = trig.nops() > 0 ? GiNaC::collect(e, trig, true) : e;
+  // each factor of each term with its common factor out
+  const auto tidy_term = [](const Expr& term) {
+    if (!is_exactly_a<GiNaC::mul>(term)) return pull_common_factor(term);
+    Expr product = 1;
+    for (std::size_t k = 0; k < term.nops(); ++k) product *= pull_common_factor(term.op(k));
+    return product;
+  };
+  if (!is_exactly_a<GiNaC::add>(collected)) return tidy_term(collected);
+  Expr sum = 0;
+  for (std::size_t i = 0; i < collected.nops(); ++i) sum += tidy_term(collected.op(i));
+  return pull_common_factor(sum);
+}
+
+}  // namespace
+
+Expr textbook_simplify(const Expr& e) {
+  const Expr simple = simplify(e);
+  // the forms tried, and whether homogenised
+  std::vector<std::pair<Expr, bool>> forms{{simple, false}};
+  if (!trig_arguments(simple).empty()) {
+    const Expr combined = combine_angle_sums(simple);
+    forms.push_back({combined, false});
+    forms.push_back({homogenize_trig(simple), true});
+    forms.push_back({homogenize_trig(combined), true});
+  }
+  // the shortest print, overall and among the homogenised forms (ties: the canonical order)
+  struct Best {
+    Expr form;
+    std::string text;
+    bool held = false;
+    void offer(const Expr& candidate, const std::string& t) {
+      if (!held || t.size() < text.size() || (t.size() == text.size() && t < text)) {
+        form = candidate;
+        text = t;
+        held = true;
+      }
+    }
+  } best, homogeneous;
+  for (const auto& [form, homogenised] : forms) {
+    for (const Expr& candidate : {form, tidy(form)}) {
+      const std::string text = canonical_text(candidate);
+      best.offer(candidate, text);
+      if (homogenised) homogeneous.offer(candidate, text);
+    }
+  }
+  // A sin²θ + C cos²θ reads as the book's, C + (A − C) sin²θ does not: a homogeneous form is
+  // taken while it is at most 1.5 times as long as the shortest
+  if (homogeneous.held && 2 * homogeneous.text.size() <= 3 * best.text.size()) {
+    return homogeneous.form;
+  }
+  return best.form;
+}
+
+std::vector<GroupedTerm> group_by_monomials(const Expr& e, const std::vector<Expr>& symbols) {
+  const Expr x = expand_within_budget(e, "grouping");
+  std::map<std::vector<int>, Expr> groups;
+  const auto add_term = [&](const Expr& term) {
+    std::vector<int> exponents;
+    Expr monomial = 1;
+    for (const Expr& s : symbols) {
+      const int d = term.is_polynomial(s) ? term.degree(s) : 0;
+      exponents.push_back(d);
+      monomial *= GiNaC::pow(s, d);
+    }
+    groups[exponents] += term / monomial;
+  };
+  if (is_exactly_a<GiNaC::add>(x)) {
+    for (std::size_t i = 0; i < x.nops(); ++i) add_term(x.op(i));
+  } else if (!x.is_zero()) {
+    add_term(x);
+  }
+  std::vector<std::pair<std::vector<int>, Expr>> ordered(groups.begin(), groups.end());
+  std::sort(ordered.begin(), ordered.end(), [](const auto& a, const auto& b) {
+    const int da = std::accumulate(a.first.begin(), a.first.end(), 0);
+    const int db = std::accumulate(b.first.begin(), b.first.end(), 0);
+    return da != db ? da > db : a.first > b.first;
+  });
+  std::vector<GroupedTerm> grouped;
+  for (const auto& [exponents, coefficient] : ordered) {
+    const Expr c = textbook_simplify(coefficient);
+    if (c.is_zero()) continue;
+    Expr monomial = 1;
+    for (std::size_t i = 0; i < symbols.size(); ++i)
+      monomial *= GiNaC::pow(symbols[i], exponents[i]);
+    grouped.push_back({c, monomial});
+  }
+  return grouped;
+}
+
+std::string join_terms(const std::vector<std::string>& texts) {
+  if (texts.empty()) return "0";
+  std::string line;
+  for (const std::string& t : texts) {
+    if (line.empty()) {
+      line = t;
+    } else if (t.starts_with("-")) {
+      line += " - " + t.substr(1);
+    } else {
+      line += " + " + t;
+    }
+  }
+  return line;
+}
+
+}  // namespace unidyn

@@ -1,0 +1,183 @@
+// Angle sums and homogenisation in sines and cosines.
+#include "unidyn/symbolic/trig_identities.hpp"
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "unidyn/symbolic/canonical_text.hpp"
+#include "unidyn/symbolic/expansion_budget.hpp"
+
+namespace unidyn {
+namespace {
+
+using GiNaC::is_exactly_a;
+
+constexpr std::size_t kMaxCombinedTerms = 400;
+
+bool is_sine(const Expr& f) {
+  return is_exactly_a<GiNaC::function>(f) && f.nops() == 1 && f.is_equal(GiNaC::sin(f.op(0)));
+}
+bool is_cosine(const Expr& f) {
+  return is_exactly_a<GiNaC::function>(f) && f.nops() == 1 && f.is_equal(GiNaC::cos(f.op(0)));
+}
+
+// One way to read a term as σ R f(A) g(B), R = |n| K with the term's number n and its other
+// factors K, f and g each the sine or the cosine of A and of B (A before B in the canonical order).
+struct Reading {
+  std::size_t term;
+  bool sine_a, sine_b;
+  int sign;
+  Expr rest, a, b;
+};
+// The readings grouped by what two must share to combine: the texts of R, A and B.
+using Readings = std::map<std::tuple<std::string, std::string, std::string>, std::vector<Reading>>;
+
+Readings readings_of(const std::vector<Expr>& terms) {
+  Readings readings;
+  for (std::size_t t = 0; t < terms.size(); ++t) {
+    GiNaC::numeric number = 1;
+    std::vector<Expr> factors;
+    const Expr& term = terms[t];
+    for (std::size_t i = 0; i < (is_exactly_a<GiNaC::mul>(term) ? term.nops() : 1); ++i) {
+      const Expr f = is_exactly_a<GiNaC::mul>(term) ? term.op(i) : term;
+      if (is_exactly_a<GiNaC::numeric>(f)) {
+        number *= GiNaC::ex_to<GiNaC::numeric>(f);
+      } else {
+        factors.push_back(f);
+      }
+    }
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+      for (std::size_t j = 0; j < factors.size(); ++j) {
+        const Expr &f = factors[i], &g = factors[j];
+        if (i == j || !(is_sine(f) || is_cosine(f)) || !(is_sine(g) || is_cosine(g))) continue;
+        if (!canonical_less(f.op(0), g.op(0))) continue;
+        Expr rest = GiNaC::abs(number);
+        for (std::size_t k = 0; k < factors.size(); ++k) {
+          if (k != i && k != j) rest *= factors[k];
+        }
+        readings[{canonical_text(rest), canonical_text(f.op(0)), canonical_text(g.op(0))}]
+            .push_back(
+                {t, is_sine(f), is_sine(g), number.is_negative() ? -1 : 1, rest, f.op(0), g.op(0)});
+      }
+    }
+  }
+  return readings;
+}
+
+// Whether x reads better negated: −b, or a sum whose first term in the canonical order is
+// negative (b − a for a − b).
+bool reads_negated(const Expr& x) {
+  if (is_exactly_a<GiNaC::add>(x)) return canonical_sign(x) < 0;
+  if (is_exactly_a<GiNaC::mul>(x)) {
+    for (std::size_t i = 0; i < x.nops(); ++i) {
+      if (is_exactly_a<GiNaC::numeric>(x.op(i))) {
+        return GiNaC::ex_to<GiNaC::numeric>(x.op(i)).is_negative();
+      }
+    }
+  }
+  return false;
+}
+// cos x and sin x with the argument's sign as it reads best: cos(−x) = cos x, sin(−x) = −sin x.
+Expr cosine(const Expr& x) { return GiNaC::cos(reads_negated(x) ? -x : x); }
+Expr sine(const Expr& x) { return reads_negated(x) ? -GiNaC::sin(-x) : GiNaC::sin(x); }
+
+// Two readings that combine into one term, or none:
+//   σ1 R cos A cos B + σ2 R sin A sin B = σ1 R cos(A − B) (σ1 = σ2) or σ1 R cos(A + B)
+//   σ1 R sin A cos B + σ2 R cos A sin B = σ1 R sin(A + B) (σ1 = σ2) or σ1 R sin(A − B)
+std::optional<Expr> combined(const Reading& r1, const Reading& r2) {
+  const bool same = r1.sign == r2.sign;
+  const Expr sum = r1.a + r1.b, difference = r1.a - r1.b;
+  if (!r1.sine_a && !r1.sine_b && r2.sine_a && r2.sine_b) {
+    return r1.sign * r1.rest * cosine(same ? difference : sum);
+  }
+  if (r1.sine_a && !r1.sine_b && !r2.sine_a && r2.sine_b) {
+    return r1.sign * r1.rest * sine(same ? sum : difference);
+  }
+  return std::nullopt;
+}
+
+// The first pair of terms that combine, in the order of the readings' keys: (first term, second
+// term, the combined term).
+std::optional<std::tuple<std::size_t, std::size_t, Expr>> first_pair(const Readings& readings) {
+  for (const auto& [key, list] : readings) {
+    for (const Reading& r1 : list) {
+      for (const Reading& r2 : list) {
+        if (r1.term == r2.term) continue;
+        if (const auto c = combined(r1, r2)) return std::make_tuple(r1.term, r2.term, *c);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+std::vector<Expr> terms_of(const Expr& e) {
+  std::vector<Expr> terms;
+  if (is_exactly_a<GiNaC::add>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i) terms.push_back(e.op(i));
+  } else {
+    terms.push_back(e);
+  }
+  return terms;
+}
+
+}  // namespace
+
+std::vector<Expr> trig_arguments(const Expr& e) {
+  GiNaC::exset found;
+  e.find(GiNaC::sin(GiNaC::wild()), found);
+  e.find(GiNaC::cos(GiNaC::wild()), found);
+  const auto less = [](const Expr& a, const Expr& b) { return canonical_less(a, b); };
+  std::set<Expr, decltype(less)> arguments(less);
+  for (const auto& f : found) arguments.insert(f.op(0));
+  return {arguments.begin(), arguments.end()};
+}
+
+Expr combine_angle_sums(const Expr& e) {
+  Expr x = expand_within_budget(e, "simplifying");
+  for (;;) {
+    std::vector<Expr> terms = terms_of(x);
+    if (terms.size() < 2 || terms.size() > kMaxCombinedTerms) return x;
+    const auto pair = first_pair(readings_of(terms));
+    if (!pair) return x;
+    const auto& [first, second, term] = *pair;
+    Expr sum = term;
+    for (std::size_t t = 0; t < terms.size(); ++t) {
+      if (t != first && t != second) sum += terms[t];
+    }
+    x = sum;
+  }
+}
+
+Expr homogenize_trig(const Expr& e) {
+  Expr x = expand_within_budget(e, "simplifying");
+  for (const Expr& argument : trig_arguments(x)) {
+    const GiNaC::symbol s, c;
+    const Expr y = expand_within_budget(
+        x.subs(GiNaC::exmap{{GiNaC::sin(argument), s}, {GiNaC::cos(argument), c}}), "simplifying");
+    if (!y.is_polynomial(GiNaC::lst{s, c})) continue;
+    // the highest degree in (s, c) of each parity, and whether a term lies below it
+    const std::vector<Expr> terms = terms_of(y);
+    int top[2] = {-1, -1};
+    for (const Expr& t : terms) {
+      const int d = t.degree(s) + t.degree(c);
+      top[d % 2] = std::max(top[d % 2], d);
+    }
+    Expr raised = 0;
+    bool below = false;
+    for (const Expr& t : terms) {
+      const int d = t.degree(s) + t.degree(c);
+      below = below || d < top[d % 2];
+      raised += t * GiNaC::pow(GiNaC::pow(s, 2) + GiNaC::pow(c, 2), (top[d % 2] - d) / 2);
+    }
+    if (!below) continue;
+    x = expand_within_budget(raised, "simplifying")
+            .subs(GiNaC::exmap{{s, GiNaC::sin(argument)}, {c, GiNaC::cos(argument)}});
+  }
+  return x;
+}
+
+}  // namespace unidyn
