@@ -2,7 +2,7 @@
 # Installs the Debian packages unidyn needs. Run as root on Debian 12 (bookworm); running it again
 # is harmless. Usage: scripts/setup.sh [run|test|fuzz|bench|all]   (default all)
 #   run     the `unidyn` command: compilers, CMake, Ninja and the libraries (scripts/run.sh)
-#   test    run + GoogleTest, Google Benchmark and the benchmark peers the test build compiles
+#   test    run + GoogleTest, Google Benchmark, the benchmark peers the test build compiles, pdflatex
 #   fuzz    run + clang with libFuzzer (scripts/fuzz.sh)
 #   bench   test + Python with SymPy for the side-by-side runs (bench/run.sh)
 #   all     every one of these and clang-format
@@ -14,8 +14,10 @@ run=(
   libeigen3-dev libginac-dev libcln-dev libsundials-dev libyaml-cpp-dev
   libcli11-dev libfmt-dev libssl-dev
 )
-# tests and micro benchmarks, and the peers of bench/ (compiled with them)
-test=(googletest libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev libsimbody-dev)
+# tests and micro benchmarks, the peers of bench/ (compiled with them), and pdflatex for the
+# LaTeX documents `derive --standalone` writes
+test=(googletest libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev libsimbody-dev
+  texlive-latex-base)
 # fuzzing: clang with libFuzzer
 fuzz=(clang libclang-rt-14-dev)
 # the side-by-side derivations against SymPy

@@ -213,6 +213,18 @@ int run_derive(const ModelCommands& c, const CommandModel& model) {
   if (c.form != "textbook" && c.form != "matrix") {
     throw std::invalid_argument("--form must be textbook or matrix");
   }
+  if (c.standalone && format != EquationFormat::latex) {
+    throw std::invalid_argument("--standalone makes a LaTeX document: it needs --format latex");
+  }
+  if (c.method != "lagrange" && c.method != "kane" && c.method != "newton-euler" &&
+      c.method != "second-form") {
+    throw std::invalid_argument("--method must be lagrange, kane, second-form or newton-euler");
+  }
+  // a document pdflatex compiles as it is: the equations' display math in an article
+  if (c.standalone) {
+    fmt::print("\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\begin{{document}}\n");
+    std::fflush(stdout);
+  }
   if (c.method == "lagrange" || c.method == "kane") {
     // M q̈ = f + Aᵀλ by Lagrange's equations, or through partial velocities (the same M and f):
     // as the book prints them, or as the matrices
@@ -230,9 +242,9 @@ int run_derive(const ModelCommands& c, const CommandModel& model) {
     const EquationsOfMotion eq = lagrange_equations(system);
     write_second_form(std::cout, system, eq,
                       lagrange_second_form(system, newton_equations(system), eq), format);
-  } else {
-    throw std::invalid_argument("--method must be lagrange, kane, second-form or newton-euler");
   }
+  std::cout.flush();
+  if (c.standalone) fmt::print("\\end{{document}}\n");
   return 0;
 }
 
@@ -548,6 +560,9 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.derive->add_option("--method", c.method, "lagrange | kane | second-form | newton-euler")
       ->capture_default_str();
   c.derive->add_option("--format", c.format, "text | latex | json")->capture_default_str();
+  c.derive->add_flag(
+      "--standalone", c.standalone,
+      "with --format latex: a whole document (article, amsmath) that pdflatex compiles");
   c.derive
       ->add_option("--form", c.form,
                    "textbook (each equation as the book prints it: M q'' terms, then products of "

@@ -17,6 +17,7 @@ struct ModelCommands {
   std::string method = "lagrange";
   std::string format = "text";
   std::string form = "textbook";
+  bool standalone = false;
   std::string output;
   std::vector<std::string> sets;
   double t_end = 0, output_step = 0, rtol = 0;

@@ -98,7 +98,7 @@ void write_lagrange(std::ostream& out, const System& system, const EquationsOfMo
 
   if (format == EquationFormat::latex) {
     out << "% " << system.name << ": Lagrange's equations, M q'' = f + A^T lambda\n";
-    out << "\\begin{aligned}\n";
+    out << "\\[\n\\begin{aligned}\n";
     for (std::size_t i = 0; i < q.size(); ++i) {
       const auto [lhs, rhs] = lagrange_row(system, eq, i);
       out << "  " << to_latex(lhs) << " &= " << to_latex(rhs) << " \\\\\n";
@@ -108,7 +108,7 @@ void write_lagrange(std::ostream& out, const System& system, const EquationsOfMo
           << (c.kind == Constraint::Kind::velocity ? " \\quad\\text{(velocity)}" : "") << " \\\\\n";
     }
     out << "  T &= " << to_latex(simplify(eq.kinetic_energy)) << " \\\\\n";
-    out << "  U &= " << to_latex(simplify(eq.potential_energy)) << "\n\\end{aligned}\n";
+    out << "  U &= " << to_latex(simplify(eq.potential_energy)) << "\n\\end{aligned}\n\\]\n";
     return;
   }
 
@@ -182,7 +182,7 @@ void write_second_form(std::ostream& out, const System& system, const EquationsO
       << ": Lagrange's equations, second form (10.16): d/dt(dT/du'^A) - dT/du^A = Phi_A"
       << (system.constraints.empty() ? "" : " + sum_k lambda_k a_k^A")
       << ", Phi_A = sum F . dv/du'^A + M . domega/du'^A\n";
-  if (latex) out << "\\begin{aligned}\n";
+  if (latex) out << "\\[\n\\begin{aligned}\n";
   for (std::size_t A = 0; A < q.size(); ++A) {
     for (const Partial& partial : partials(A)) {
       if (latex) {
@@ -199,7 +199,7 @@ void write_second_form(std::ostream& out, const System& system, const EquationsO
       out << "  [" << q[A].name << "]  " << to_text(lhs(A)) << " = " << to_text(rhs(A)) << "\n";
     }
   }
-  if (latex) out << "\\end{aligned}\n";
+  if (latex) out << "\\end{aligned}\n\\]\n";
 }
 
 void write_newton(std::ostream& out, const System& system, const NewtonEquations& newton,
@@ -239,7 +239,7 @@ void write_newton(std::ostream& out, const System& system, const NewtonEquations
       << ": Newton's second law m a = F + R for each particle, Euler's laws m a = F + R and"
          " dH/dt = M + M_R (about the centre of mass) for each body (R, M_R: constraint force and"
          " moment)\n";
-  if (latex) out << "\\begin{aligned}\n";
+  if (latex) out << "\\[\n\\begin{aligned}\n";
   // One balance law, component by component: lhs_k = rhs_k + <unknown>_k
   const auto write_balance = [&](const std::string& label, const VectorExpr& lhs_vector,
                                  const VectorExpr& rhs_vector, const std::string& unknown) {
@@ -247,8 +247,10 @@ void write_newton(std::ostream& out, const System& system, const NewtonEquations
       const Expr lhs = collect_in(lhs_vector[k], accelerations(system));
       const Expr rhs = simplify(rhs_vector[k]);
       if (latex) {
-        out << "  " << to_latex(lhs) << " &= " << to_latex(rhs) << " + " << unknown << "_{" << label
-            << "," << k + 1 << "} \\\\\n";
+        // R_{P,1}, M^{R}_{B.H,1}: the unknown's name upright, its subscripts after it
+        const std::string symbol = unknown == "M_R" ? "M^{R}" : unknown;
+        out << "  " << to_latex(lhs) << " &= " << to_latex(rhs) << " + " << symbol
+            << "_{\\mathrm{" << label << "}," << k + 1 << "} \\\\\n";
       } else {
         out << "  [" << label << "." << axes[k] << "]  " << to_text(lhs) << " = " << to_text(rhs)
             << " + " << unknown << "_" << label << "." << axes[k] << "\n";
@@ -264,7 +266,7 @@ void write_newton(std::ostream& out, const System& system, const NewtonEquations
     write_balance(system.bodies[i].name, b.mass_times_acceleration, b.applied_force, "R");
     write_balance(system.bodies[i].name + ".H", b.momentum_rate, b.applied_moment, "M_R");
   }
-  if (latex) out << "\\end{aligned}\n";
+  if (latex) out << "\\end{aligned}\n\\]\n";
 }
 
 }  // namespace unidyn

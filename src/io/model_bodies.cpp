@@ -9,7 +9,8 @@ void ModelReader::read_parameters(const YAML::Node& node, System& system) {
     const std::string name = new_name(item.first, system, "parameter");
     // a number as typed, or an expression of numbers and earlier parameters (pi/10, 2*L, 30*deg)
     if (const auto value = plain_number(item.second)) {
-      system.parameters.push_back({name, GiNaC::realsymbol(name), *value, at(item.first)});
+      system.parameters.push_back(
+          {name, GiNaC::realsymbol(name, latex_name(name)), *value, at(item.first)});
       continue;
     }
     const Expr definition =
@@ -20,8 +21,8 @@ void ModelReader::read_parameters(const YAML::Node& node, System& system) {
                             "' must be a real number, or an expression of numbers and earlier "
                             "parameters (such as pi/10 or 2*L)");
     }
-    system.parameters.push_back(
-        {name, GiNaC::realsymbol(name), *value, at(item.first), definition, true});
+    system.parameters.push_back({name, GiNaC::realsymbol(name, latex_name(name)), *value,
+                                 at(item.first), definition, true});
   }
 }
 

@@ -19,6 +19,23 @@ std::vector<std::string> texts(const std::vector<GroupedTerm>& terms, bool latex
 
 }  // namespace
 
+// One LaTeX equation of align: `lead`, the terms broken into lines of about 160 characters (each
+// line after the first indented by \quad and not numbered), then `tail` ("= 0 \label{..}").
+std::string latex_equation(const std::string& lead, const std::vector<std::string>& terms,
+                           const std::string& tail) {
+  std::string text = "  & " + lead, line;
+  for (std::size_t k = 0; k < terms.size(); ++k) {
+    std::string piece = terms[k];
+    if (k > 0) piece = piece.starts_with("-") ? " - " + piece.substr(1) : " + " + piece;
+    if (k > 0 && line.size() + piece.size() > 160) {
+      text += line + " \\nonumber \\\\\n  &\\quad";
+      line.clear();
+    }
+    line += piece;
+  }
+  return text + line + tail;
+}
+
 void write_textbook_lagrange(std::ostream& out, const System& system, const EquationsOfMotion& eq,
                              EquationFormat format) {
   const bool latex = format == EquationFormat::latex;
@@ -28,15 +45,21 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
     rates.push_back(c.rate);
     accelerations.push_back(c.acceleration);
   }
-  const std::string T = join_terms(texts(group_by_monomials(eq.kinetic_energy, rates), latex));
+  const auto T_terms = texts(group_by_monomials(eq.kinetic_energy, rates), latex);
   const Expr U = textbook_simplify(eq.potential_energy);
   const std::string U_text = latex ? to_latex(U) : to_text(U);
   const bool constrained = !system.constraints.empty();
   out << (latex ? "% " : "") << system.name << ": Lagrange's equations"
       << (constrained ? ", the constraint forces sum_k lambda_k a_k on the right" : "") << "\n";
-  if (latex) out << "\\begin{aligned}\n";
-  out << (latex ? "  T &= " : "  T = ") << T << (latex ? " \\\\\n" : "\n");
-  out << (latex ? "  U &= " : "  U = ") << U_text << (latex ? " \\\\\n" : "\n");
+  // the lines of align, each labelled (eq:<coordinate> or eq:<constraint>)
+  std::vector<std::string> lines;
+  if (latex) {
+    lines.push_back(latex_equation("T = ", T_terms, " \\nonumber"));
+    lines.push_back("  & U = " + U_text + " \\nonumber");
+  } else {
+    out << "  T = " << join_terms(T_terms) << "\n";
+    out << "  U = " << U_text << "\n";
+  }
   for (std::size_t i = 0; i < q.size(); ++i) {
     // Σ_j M_ij q̈^j, then −f_i by products of rates
     std::vector<GroupedTerm> left;
@@ -52,20 +75,20 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
       right += system.constraints[k].multiplier * eq.constraint_matrix(k, i);
       multipliers.push_back(system.constraints[k].multiplier);
     }
-    const std::vector<GroupedTerm> right_terms = group_by_monomials(right, multipliers);
-    const std::string lhs = join_terms(texts(left, latex));
-    const std::string rhs = join_terms(texts(right_terms, latex));
+    const std::string rhs = join_terms(texts(group_by_monomials(right, multipliers), latex));
     if (latex) {
-      out << "  " << lhs << " &= " << rhs << " \\\\\n";
+      lines.push_back(
+          latex_equation("", texts(left, true), " = " + rhs + " \\label{eq:" + q[i].name + "}"));
     } else {
-      out << "  [" << q[i].name << "]  " << lhs << " = " << rhs << "\n";
+      out << "  [" << q[i].name << "]  " << join_terms(texts(left, false)) << " = " << rhs << "\n";
     }
   }
   for (const auto& c : system.constraints) {
     const Expr psi = textbook_simplify(c.expression);
     if (latex) {
-      out << "  " << to_latex(psi) << " &= 0"
-          << (c.kind == Constraint::Kind::velocity ? " \\quad\\text{(velocity)}" : "") << " \\\\\n";
+      lines.push_back("  & " + to_latex(psi) + " = 0" +
+                      (c.kind == Constraint::Kind::velocity ? " \\quad\\text{(velocity)}" : "") +
+                      " \\label{eq:" + c.name + "}");
     } else {
       out << "  constraint " << c.name << " ("
           << (c.kind == Constraint::Kind::position ? "position" : "velocity")
@@ -73,7 +96,13 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
           << to_text(c.multiplier) << "\n";
     }
   }
-  if (latex) out << "\\end{aligned}\n";
+  if (latex) {
+    out << "\\begin{align}\n";
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      out << lines[k] << (k + 1 < lines.size() ? " \\\\\n" : "\n");
+    }
+    out << "\\end{align}\n";
+  }
 }
 
 }  // namespace unidyn

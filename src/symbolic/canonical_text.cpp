@@ -32,6 +32,33 @@ bool is_power_of_sum(const Expr& e) {
          e.op(1).info(GiNaC::info_flags::integer);
 }
 
+// How many primes end the name of a symbol in e (2 at most): 1 for a rate q', 2 for an
+// acceleration q'' (symbolic/coordinates.hpp names them so).
+int derivative_order(const Expr& e) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) {
+    const std::string& name = GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+    int primes = 0;
+    while (primes < 2 && name.size() > std::size_t(primes) &&
+           name[name.size() - 1 - std::size_t(primes)] == '\'') {
+      ++primes;
+    }
+    return primes;
+  }
+  int order = 0;
+  for (std::size_t i = 0; i < e.nops(); ++i) order = std::max(order, derivative_order(e.op(i)));
+  return order;
+}
+
+// Where a factor goes in a product, as a book writes it: sums, then parameters and coordinates,
+// then functions (sin θ), then what has rates, then what has accelerations:
+// (m1 + m2) l1² cos θ1 θ̇1 θ̈2.
+int factor_rank(const Expr& f) {
+  if (const int order = derivative_order(f); order > 0) return 2 + order;
+  if (is_exactly_a<GiNaC::add>(f)) return 0;
+  const Expr base = is_exactly_a<GiNaC::power>(f) ? f.op(0) : f;
+  return is_exactly_a<GiNaC::function>(base) ? 2 : 1;
+}
+
 // A product split into its number and its other factors; anything else is 1 × itself.
 struct Split {
   GiNaC::numeric coefficient = 1;
@@ -193,16 +220,16 @@ class Printer {
   // Factors sorted by their own text, joined by * (LaTeX: a space), and the product of their
   // signs.
   std::pair<std::string, int> factors_text(const std::vector<Expr>& factors) {
-    std::vector<std::string> texts;
+    std::vector<std::pair<int, std::string>> texts;
     int sign = 1;
     for (const Expr& f : factors) {
       auto [text, s] = factor(f);
-      texts.push_back(std::move(text));
+      texts.emplace_back(factor_rank(f), std::move(text));
       sign *= s;
     }
     std::sort(texts.begin(), texts.end());
     std::string text;
-    for (const std::string& t : texts) text += (text.empty() ? "" : (latex_ ? " " : "*")) + t;
+    for (const auto& [rank, t] : texts) text += (text.empty() ? "" : (latex_ ? " " : "*")) + t;
     return {text, sign};
   }
 
@@ -254,25 +281,46 @@ class Printer {
       }
       return "\\frac{1}{" + base_text + "^{" + print(-exponent, 0) + "}}";
     }
+    // \sin^{2}\theta, as the book writes a power of a function
+    if (is_exactly_a<GiNaC::function>(base) && exponent.info(GiNaC::info_flags::posint) &&
+        GiNaC::ex_to<GiNaC::function>(base).get_name() != "abs") {
+      return command(GiNaC::ex_to<GiNaC::function>(base).get_name()) + "^{" + print(exponent, 0) +
+             "}" + argument_part(base);
+    }
     return base_text + "^{" + print(exponent, 0) + "}";
   }
 
   std::string function(const Expr& e) {
     const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    if (latex_ && name != "abs") return command(name) + argument_part(e);
     std::string arguments;
     for (std::size_t i = 0; i < e.nops(); ++i) {
       arguments += (i ? "," : "") + print(e.op(i), 0);
     }
     if (!latex_) return name + "(" + arguments + ")";
+    return "\\left|" + arguments + "\\right|";
+  }
+
+  // \sin, \cos, …, or \operatorname{name}.
+  static std::string command(const std::string& name) {
     static const std::map<std::string, std::string> named = {
         {"sin", "\\sin"},     {"cos", "\\cos"},     {"tan", "\\tan"},    {"exp", "\\exp"},
         {"log", "\\ln"},      {"sinh", "\\sinh"},   {"cosh", "\\cosh"},  {"tanh", "\\tanh"},
         {"asin", "\\arcsin"}, {"acos", "\\arccos"}, {"atan", "\\arctan"}};
-    if (name == "abs") return "\\left|" + arguments + "\\right|";
     const auto found = named.find(name);
-    const std::string command =
-        found != named.end() ? found->second : "\\operatorname{" + name + "}";
-    return command + "\\left(" + arguments + "\\right)";
+    return found != named.end() ? found->second : "\\operatorname{" + name + "}";
+  }
+
+  // A function's arguments in LaTeX: a lone symbol as the book writes it (\sin\theta), anything
+  // else in parentheses.
+  std::string argument_part(const Expr& f) {
+    if (f.nops() == 1 && GiNaC::is_a<GiNaC::symbol>(f.op(0))) {
+      const std::string a = print(f.op(0), 0);
+      return (a.starts_with("\\") ? "" : " ") + a;
+    }
+    std::string arguments;
+    for (std::size_t i = 0; i < f.nops(); ++i) arguments += (i ? "," : "") + print(f.op(i), 0);
+    return "\\left(" + arguments + "\\right)";
   }
 
   bool latex_;

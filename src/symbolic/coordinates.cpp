@@ -4,9 +4,15 @@
 #include <cctype>
 
 namespace unidyn {
-namespace {
 
-// GiNaC prints a symbol's LaTeX name verbatim; Greek names get a backslash.
+std::size_t subscript_start(const std::string& name) {
+  std::size_t digits = name.size();
+  while (digits > 0 && std::isdigit(static_cast<unsigned char>(name[digits - 1]))) --digits;
+  return digits == 0 ? name.size() : digits;
+}
+
+// GiNaC prints a symbol's LaTeX name verbatim; Greek names get a backslash, trailing digits a
+// subscript, other names of several letters \mathrm.
 std::string latex_name(const std::string& name) {
   static const char* const greek[] = {
       "alpha",   "beta",   "gamma", "delta",   "epsilon", "zeta",  "eta",   "theta", "iota",
@@ -16,14 +22,28 @@ std::string latex_name(const std::string& name) {
   for (const char* g : greek) {
     if (name == g) return std::string("\\") + name;
   }
+  // mu_d → \mu_{d}
+  if (const std::size_t underscore = name.find('_');
+      underscore != std::string::npos && underscore > 0 && underscore + 1 < name.size()) {
+    return latex_name(name.substr(0, underscore)) + "_{" + latex_name(name.substr(underscore + 1)) +
+           "}";
+  }
   // x1 → x_{1}
-  std::size_t digits = name.size();
-  while (digits > 0 && std::isdigit(static_cast<unsigned char>(name[digits - 1]))) --digits;
-  if (digits > 0 && digits < name.size()) {
+  const std::size_t digits = subscript_start(name);
+  if (digits < name.size()) {
     return latex_name(name.substr(0, digits)) + "_{" + name.substr(digits) + "}";
   }
   if (name.size() > 1) return "\\mathrm{" + name + "}";
   return name;
+}
+
+namespace {
+
+// \dot{θ}_{1} for θ1: the accent on the name, the subscript after it.
+std::string accented(const char* accent, const std::string& name) {
+  const std::size_t digits = subscript_start(name);
+  const std::string base = std::string(accent) + "{" + latex_name(name.substr(0, digits)) + "}";
+  return digits < name.size() ? base + "_{" + name.substr(digits) + "}" : base;
 }
 
 }  // namespace
@@ -31,9 +51,9 @@ std::string latex_name(const std::string& name) {
 CoordinateSymbols::CoordinateSymbols(const std::string& coordinate_name)
     : name(coordinate_name),
       value(GiNaC::realsymbol(coordinate_name, latex_name(coordinate_name))),
-      rate(GiNaC::realsymbol(coordinate_name + "'", "\\dot{" + latex_name(coordinate_name) + "}")),
-      acceleration(GiNaC::realsymbol(coordinate_name + "''",
-                                     "\\ddot{" + latex_name(coordinate_name) + "}")) {}
+      rate(GiNaC::realsymbol(coordinate_name + "'", accented("\\dot", coordinate_name))),
+      acceleration(GiNaC::realsymbol(coordinate_name + "''", accented("\\ddot", coordinate_name))) {
+}
 
 Configuration::Configuration() : time_(GiNaC::realsymbol("t")) {}
 

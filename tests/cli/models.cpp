@@ -167,10 +167,10 @@ TEST(CliModels, DeriveText) {
   // vertical) and m L² sin²φ θ'' + 2 m L² sin φ cos φ φ' θ' = 0
   EXPECT_EQ(lines_starting(r.out, "  [phi]  "),
             std::vector<std::string>{
-                "  [phi]  L^2*m*phi'' - L^2*cos(phi)*m*sin(phi)*theta'^2 - L*g*m*sin(phi) = 0"});
+                "  [phi]  L^2*m*phi'' - L^2*m*cos(phi)*sin(phi)*theta'^2 - L*g*m*sin(phi) = 0"});
   EXPECT_EQ(lines_starting(r.out, "  [theta]  "),
             std::vector<std::string>{"  [theta]  L^2*m*sin(phi)^2*theta'' + "
-                                     "2*L^2*cos(phi)*m*phi'*sin(phi)*theta' = 0"});
+                                     "2*L^2*m*cos(phi)*sin(phi)*phi'*theta' = 0"});
   // the matrix form: [phi] m L² φ'' = m L² sin φ cos φ θ'² + m g L sin φ; [theta] m L² sin² φ θ''
   // = −2 ...
   const Outcome matrix = run("derive spherical-pendulum --form matrix");
@@ -188,23 +188,34 @@ TEST(CliModels, DeriveText) {
   expect_bad_input(run("derive spherical-pendulum --form pretty"), "--form pretty");
 }
 
-// `derive --format latex`: an aligned block with \ddot{\phi} and \ddot{\theta}.
+// `derive --format latex`: the textbook form in an align environment, one labelled equation per
+// coordinate (\ddot{\phi}, \dot{\theta}^{2}, \sin\phi as the book writes them), T and U not
+// numbered; the matrix form in display math with an aligned block.
 TEST(CliModels, DeriveLatex) {
   const Outcome r = run("derive spherical-pendulum --format latex");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
-  EXPECT_TRUE(contains(r.out, "\\begin{aligned}")) << r.out;
-  EXPECT_TRUE(contains(r.out, "\\end{aligned}")) << r.out;
-  EXPECT_TRUE(contains(r.out, "\\ddot{\\phi}")) << r.out;
-  EXPECT_TRUE(contains(r.out, "\\ddot{\\theta}")) << r.out;
-  EXPECT_TRUE(contains(r.out, "\\dot{\\theta}^{2}")) << r.out;
-  EXPECT_LT(r.out.find("\\begin{aligned}"), r.out.find("\\end{aligned}"));
+  EXPECT_LT(r.out.find("\\begin{align}"), r.out.find("\\end{align}")) << r.out;
+  for (const char* part : {"\\ddot{\\phi}", "\\ddot{\\theta}", "\\dot{\\theta}^{2}", "\\sin\\phi",
+                           "\\label{eq:phi}", "\\label{eq:theta}", "& T = ", "& U = "}) {
+    EXPECT_TRUE(contains(r.out, part)) << part << " in\n" << r.out;
+  }
+  std::size_t unnumbered = 0;
+  for (std::size_t at = r.out.find("\\nonumber"); at != std::string::npos;
+       at = r.out.find("\\nonumber", at + 1)) {
+    ++unnumbered;
+  }
+  EXPECT_EQ(unnumbered, 2u) << r.out;  // T and U
+  const Outcome matrix = run("derive spherical-pendulum --format latex --form matrix");
+  ASSERT_EQ(matrix.status, 0) << matrix.err;
+  EXPECT_LT(matrix.out.find("\\[\n\\begin{aligned}"), matrix.out.find("\\end{aligned}\n\\]"));
   // one row per coordinate and T, U: four "&="
   std::size_t rows = 0;
-  for (std::size_t at = r.out.find("&="); at != std::string::npos; at = r.out.find("&=", at + 1)) {
+  for (std::size_t at = matrix.out.find("&="); at != std::string::npos;
+       at = matrix.out.find("&=", at + 1)) {
     ++rows;
   }
-  EXPECT_EQ(rows, 4u) << r.out;
+  EXPECT_EQ(rows, 4u) << matrix.out;
 }
 
 // `derive --format json`: valid JSON with the mass matrix, 2 × 2, diagonal.

@@ -67,9 +67,13 @@ TEST(CanonicalText, Latex) {
   EXPECT_EQ(both([](const Symbols& s) { return s.a / s.b; }, canonical_latex), "\\frac{a}{b}");
   EXPECT_EQ(both([](const Symbols& s) { return s.c / (s.b - s.a); }, canonical_latex),
             "-\\frac{c}{\\left(a-b\\right)}");
+  // a book's order: the root before the function, \sin a for a lone symbol, \sin^{2} a
   EXPECT_EQ(
       both([](const Symbols& s) { return GiNaC::sin(s.a) * GiNaC::sqrt(s.b); }, canonical_latex),
-      "\\sin\\left(a\\right) \\sqrt{b}");
+      "\\sqrt{b} \\sin a");
+  EXPECT_EQ(
+      both([](const Symbols& s) { return GiNaC::pow(GiNaC::cos(s.a + s.b), 2); }, canonical_latex),
+      "\\cos^{2}\\left(a+b\\right)");
   EXPECT_EQ(both([](const Symbols& s) { return GiNaC::pow(s.a, 2); }, canonical_latex), "a^{2}");
 }
 

@@ -13,7 +13,9 @@ namespace unidyn {
 //   the potential's and the applied forces' terms) = Σ_k λ_k a_k^i   (0 without constraints)
 // — each equation with everything but the constraint forces on the left, −f_i grouped by the
 // rates; every coefficient in its shortest printed form (symbolic/textbook_form.hpp): angle sums
-// combined, sin² + cos² = 1 used, common factors out. Then each constraint.
+// combined, sin² + cos² = 1 used, common factors out. Then each constraint. LaTeX: an align
+// environment, one equation per coordinate labelled eq:<coordinate> (a constraint eq:<name>), long
+// ones broken into lines.
 void write_textbook_lagrange(std::ostream& out, const System& system, const EquationsOfMotion& eq,
                              EquationFormat format);
 

@@ -9,6 +9,15 @@
 namespace unidyn {
 
 // The symbols of one generalised coordinate q: q itself, its rate der(q) and its acceleration.
+// Where a name's trailing digits begin (its size when it has none, or is all digits): they are
+// printed as a subscript in LaTeX, m1 as m_{1}.
+std::size_t subscript_start(const std::string& name);
+
+// A name in LaTeX: Greek names as Greek (theta → \theta), trailing digits as a subscript
+// (theta1 → \theta_{1}), what follows an underscore too (mu_d → \mu_{d}), other names of several
+// letters upright (\mathrm{Rw}).
+std::string latex_name(const std::string& name);
+
 struct CoordinateSymbols {
   std::string name;
   GiNaC::realsymbol value;

@@ -1,0 +1,52 @@
+// `derive --format latex --standalone` is a document pdflatex compiles (-halt-on-error: any LaTeX
+// error fails), for twelve bundled models by every method and in both forms. pdflatex comes from
+// Debian's texlive-latex-base (scripts/setup.sh test); without it the test is skipped, saying so.
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "cli_support.hpp"
+
+namespace unidyn {
+namespace {
+
+using namespace cli_test;
+
+bool have_pdflatex() {
+  return std::system("command -v pdflatex >/dev/null 2>&1") == 0;
+}
+
+TEST(LatexDocuments, PdflatexCompilesEveryForm) {
+  if (!have_pdflatex()) GTEST_SKIP() << "pdflatex is not installed (texlive-latex-base)";
+  const std::string directory = temp_path("latex");
+  std::filesystem::create_directories(directory);
+  for (const char* model : {"spherical-pendulum", "double-pendulum", "heavy-top", "rolling-disk",
+                            "pendulum-cart", "kepler", "rotating-hoop", "helix", "chaplygin-car",
+                            "two-body", "rotating-cone", "compound-pendulum"}) {
+    for (const char* how : {"--method lagrange", "--method lagrange --form matrix",
+                            "--method newton-euler", "--method second-form"}) {
+      const Outcome r =
+          run("derive " + std::string(model) + " " + how + " --format latex --standalone");
+      ASSERT_EQ(r.status, 0) << model << " " << how << ": " << r.err;
+      EXPECT_TRUE(r.out.starts_with("\\documentclass{article}")) << r.out;
+      write_file(directory + "/equations.tex", r.out);
+      const std::string command = "cd '" + directory +
+                                  "' && pdflatex -interaction=nonstopmode -halt-on-error "
+                                  "equations.tex >compile.log 2>&1";
+      EXPECT_EQ(std::system(command.c_str()), 0)
+          << model << " " << how << ":\n"
+          << read_file(directory + "/compile.log").substr(0, 3000);
+    }
+  }
+  std::filesystem::remove_all(directory);
+}
+
+// --standalone is for LaTeX only.
+TEST(LatexDocuments, StandaloneNeedsLatex) {
+  const Outcome r = run("derive double-pendulum --standalone");
+  expect_bad_input(r, "--standalone without --format latex");
+  EXPECT_TRUE(contains(r.err, "--standalone makes a LaTeX document")) << r.err;
+}
+
+}  // namespace
+}  // namespace unidyn
