@@ -1,18 +1,48 @@
 // Lagrange's equations in the book's form.
 #include "unidyn/io/textbook_equations.hpp"
 
+#include <cctype>
+
 #include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/textbook_form.hpp"
 
 namespace unidyn {
 namespace {
 
-// Each grouped term's text, coefficient × monomial.
+// The terms of a printed sum: split at each + or − outside parentheses and braces (the first
+// sign kept with its term).
+std::vector<std::string> top_level_terms(const std::string& text) {
+  std::vector<std::string> terms;
+  int depth = 0;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '(' || c == '{' || c == '[') ++depth;
+    if (c == ')' || c == '}' || c == ']') --depth;
+    // not the sign of an exponent (x^-1, 1e-10)
+    const bool exponent = text[i - (i > 0 ? 1 : 0)] == '^' ||
+                          (i > 1 && text[i - 1] == 'e' && std::isdigit(text[i - 2]) != 0);
+    if (depth == 0 && i > start && (c == '+' || c == '-') && !exponent) {
+      terms.push_back(text.substr(start, i - start));
+      start = c == '+' ? i + 1 : i;
+    }
+  }
+  terms.push_back(text.substr(start));
+  return terms;
+}
+
+// Each grouped term's text, coefficient × monomial; the terms free of the grouping symbols (the
+// potential's and the applied forces') one by one.
 std::vector<std::string> texts(const std::vector<GroupedTerm>& terms, bool latex) {
   std::vector<std::string> out;
   for (const GroupedTerm& t : terms) {
     const Expr product = t.coefficient * t.monomial;
-    out.push_back(latex ? to_latex(product) : to_text(product));
+    const std::string text = latex ? to_latex(product) : to_text(product);
+    if (!t.monomial.is_equal(1) || !GiNaC::is_exactly_a<GiNaC::add>(t.coefficient)) {
+      out.push_back(text);
+      continue;
+    }
+    for (std::string& term : top_level_terms(text)) out.push_back(std::move(term));
   }
   return out;
 }
