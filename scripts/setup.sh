@@ -2,9 +2,10 @@
 # Installs the Debian packages unidyn needs. Run as root on Debian 12 (bookworm); running it again
 # is harmless. Usage: scripts/setup.sh [run|test|fuzz|bench|all]   (default all)
 #   run     the `unidyn` command: compilers, CMake, Ninja and the libraries (scripts/run.sh)
-#   test    run + GoogleTest, Google Benchmark, the benchmark peers the test build compiles, pdflatex
+#   test    run + GoogleTest, Google Benchmark, the benchmark peers the test build compiles, pdflatex,
+#           SymPy
 #   fuzz    run + clang with libFuzzer (scripts/fuzz.sh)
-#   bench   test + Python with SymPy for the side-by-side runs (bench/run.sh)
+#   bench   test (which has Python with SymPy for the side-by-side runs of bench/run.sh)
 #   all     every one of these and clang-format
 set -euo pipefail
 
@@ -14,21 +15,19 @@ run=(
   libeigen3-dev libginac-dev libcln-dev libsundials-dev libyaml-cpp-dev
   libcli11-dev libfmt-dev libssl-dev
 )
-# tests and micro benchmarks, the peers of bench/ (compiled with them), and pdflatex for the
-# LaTeX documents `derive --standalone` writes
+# tests and micro benchmarks, the peers of bench/ (compiled with them), pdflatex for the LaTeX
+# documents `derive --standalone` writes, and SymPy to read the JSON `derive` writes
 test=(googletest libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev libsimbody-dev
-  texlive-latex-base)
+  texlive-latex-base python3 python3-sympy)
 # fuzzing: clang with libFuzzer
 fuzz=(clang libclang-rt-14-dev)
-# the side-by-side derivations against SymPy
-bench=(python3 python3-sympy)
 
 case "${1:-all}" in
   run) packages=("${run[@]}") ;;
   test) packages=("${run[@]}" "${test[@]}") ;;
   fuzz) packages=("${run[@]}" "${fuzz[@]}") ;;
-  bench) packages=("${run[@]}" "${test[@]}" "${bench[@]}") ;;
-  all) packages=("${run[@]}" "${test[@]}" "${fuzz[@]}" "${bench[@]}" clang-format) ;;
+  bench) packages=("${run[@]}" "${test[@]}") ;;
+  all) packages=("${run[@]}" "${test[@]}" "${fuzz[@]}" clang-format) ;;
   *) echo "setup.sh: unknown group '$1' (expected run, test, fuzz, bench or all)" >&2; exit 2 ;;
 esac
 

@@ -65,34 +65,7 @@ void write_lagrange(std::ostream& out, const System& system, const EquationsOfMo
   const auto& q = system.coordinates();
   const auto& constraints = system.constraints;
   if (format == EquationFormat::json) {
-    out << "{\n  \"name\": " << quoted(system.name) << ",\n  \"method\": \"lagrange\",\n";
-    out << "  \"coordinates\": [";
-    for (std::size_t i = 0; i < q.size(); ++i) out << (i ? ", " : "") << quoted(q[i].name);
-    out << "],\n  \"kinetic_energy\": " << quoted(to_text(simplify(eq.kinetic_energy)));
-    out << ",\n  \"potential_energy\": " << quoted(to_text(simplify(eq.potential_energy)));
-    out << ",\n  \"mass_matrix\": [";
-    for (std::size_t i = 0; i < q.size(); ++i) {
-      out << (i ? ", " : "") << "[";
-      for (std::size_t j = 0; j < q.size(); ++j) {
-        out << (j ? ", " : "") << quoted(to_text(simplify(eq.mass_matrix(i, j))));
-      }
-      out << "]";
-    }
-    out << "],\n  \"forcing\": [";
-    for (std::size_t i = 0; i < q.size(); ++i) {
-      out << (i ? ", " : "") << quoted(to_text(simplify(eq.forcing[i])));
-    }
-    out << "],\n  \"constraints\": [";
-    for (std::size_t k = 0; k < constraints.size(); ++k) {
-      out << (k ? ", " : "") << "{\"name\": " << quoted(constraints[k].name)
-          << ", \"multiplier\": " << quoted(to_text(constraints[k].multiplier)) << ", \"row\": [";
-      for (std::size_t j = 0; j < q.size(); ++j) {
-        out << (j ? ", " : "") << quoted(to_text(simplify(eq.constraint_matrix(k, j))));
-      }
-      out << "], \"velocity_term\": " << quoted(to_text(simplify(eq.constraint_velocity_term[k])))
-          << ", \"acceleration_bias\": " << quoted(to_text(simplify(eq.constraint_bias[k]))) << "}";
-    }
-    out << "]\n}\n";
+    write_lagrange_json(out, system, eq);
     return;
   }
 
@@ -249,8 +222,8 @@ void write_newton(std::ostream& out, const System& system, const NewtonEquations
       if (latex) {
         // R_{P,1}, M^{R}_{B.H,1}: the unknown's name upright, its subscripts after it
         const std::string symbol = unknown == "M_R" ? "M^{R}" : unknown;
-        out << "  " << to_latex(lhs) << " &= " << to_latex(rhs) << " + " << symbol
-            << "_{\\mathrm{" << label << "}," << k + 1 << "} \\\\\n";
+        out << "  " << to_latex(lhs) << " &= " << to_latex(rhs) << " + " << symbol << "_{\\mathrm{"
+            << label << "}," << k + 1 << "} \\\\\n";
       } else {
         out << "  [" << label << "." << axes[k] << "]  " << to_text(lhs) << " = " << to_text(rhs)
             << " + " << unknown << "_" << label << "." << axes[k] << "\n";

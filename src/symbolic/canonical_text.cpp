@@ -85,7 +85,10 @@ Split split(const Expr& e) {
 
 class Printer {
  public:
-  explicit Printer(bool latex) : latex_(latex) {}
+  // SymPy's notation: the text one with ** for powers, Abs, pi, and the names of
+  // symbolic/canonical_text.hpp's sympy_name.
+  enum class Style { text, latex, sympy };
+  explicit Printer(Style style) : latex_(style == Style::latex), sympy_(style == Style::sympy) {}
 
   // e inside something of precedence `level` (0: alone).
   std::string print(const Expr& e, unsigned level) {
@@ -143,6 +146,10 @@ class Printer {
 
   // GiNaC's own text of an atom (a number, a symbol, a constant).
   std::string atom(const Expr& e) const {
+    if (sympy_ && GiNaC::is_a<GiNaC::symbol>(e)) {
+      return sympy_name(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+    }
+    if (sympy_ && e.is_equal(GiNaC::Pi)) return "pi";
     std::ostringstream out;
     if (latex_) out << GiNaC::latex;
     out << e;
@@ -274,7 +281,7 @@ class Printer {
     const bool turned = is_power_of_sum(e) && sign_of(base) < 0;
     const std::string base_text =
         turned ? open() + sum(parts(base), true) + close() : print(base, kPower);
-    if (!latex_) return base_text + "^" + print(exponent, kPower);
+    if (!latex_) return base_text + (sympy_ ? "**" : "^") + print(exponent, kPower);
     if (is_negative_number(exponent)) {
       if (exponent.is_equal(-1)) {
         return "\\frac{1}{" + (turned ? sum(parts(base), true) : print(base, 0)) + "}";
@@ -297,6 +304,7 @@ class Printer {
     for (std::size_t i = 0; i < e.nops(); ++i) {
       arguments += (i ? "," : "") + print(e.op(i), 0);
     }
+    if (sympy_ && name == "abs") return "Abs(" + arguments + ")";
     if (!latex_) return name + "(" + arguments + ")";
     return "\\left|" + arguments + "\\right|";
   }
@@ -323,7 +331,7 @@ class Printer {
     return "\\left(" + arguments + "\\right)";
   }
 
-  bool latex_;
+  bool latex_, sympy_;
   std::map<std::pair<const GiNaC::basic*, unsigned>, std::string> memo_;
   std::map<const GiNaC::basic*, std::unique_ptr<Parts>> parts_;
   std::vector<Expr> keep_;
@@ -332,11 +340,25 @@ class Printer {
 }  // namespace
 
 std::string canonical_text(const Expr& e) {
-  return Printer(false).print(e, 0);
+  return Printer(Printer::Style::text).print(e, 0);
+}
+
+std::string canonical_sympy(const Expr& e) {
+  return Printer(Printer::Style::sympy).print(e, 0);
+}
+
+std::string sympy_name(const std::string& name) {
+  if (name.ends_with("''")) return name.substr(0, name.size() - 2) + "_dd";
+  if (name.ends_with("'")) return name.substr(0, name.size() - 1) + "_d";
+  // lambda(c) → lambda_c
+  if (name.starts_with("lambda(") && name.ends_with(")")) {
+    return "lambda_" + name.substr(7, name.size() - 8);
+  }
+  return name;
 }
 
 std::string canonical_latex(const Expr& e) {
-  return Printer(true).print(e, 0);
+  return Printer(Printer::Style::latex).print(e, 0);
 }
 
 bool canonical_less(const Expr& a, const Expr& b) {
@@ -344,7 +366,7 @@ bool canonical_less(const Expr& a, const Expr& b) {
 }
 
 int canonical_sign(const Expr& e) {
-  return Printer(false).sign_of(e);
+  return Printer(Printer::Style::text).sign_of(e);
 }
 
 // GiNaC's normal form n/d is unique up to the sign of both, which GiNaC fixes by a leading

@@ -16,6 +16,13 @@ enum class EquationFormat { text, latex, json };
 void write_lagrange(std::ostream& out, const System& system, const EquationsOfMotion& eq,
                     EquationFormat format);
 
+// Lagrange's equations as JSON for other tools: the expressions in SymPy's notation
+// (symbolic/canonical_text.hpp canonical_sympy: ** for powers, rates q_d, accelerations q_dd,
+// multipliers lambda_c), each coordinate with those names and its initial value and rate, the
+// parameters with their values, T, U, M, f and each constraint's row a_k, e_k and bias b_k
+// (M q_dd = f + A^T lambda, a_k q_d + e_k = 0, a_k q_dd + b_k = 0).
+void write_lagrange_json(std::ostream& out, const System& system, const EquationsOfMotion& eq);
+
 // Lagrange's equations in the second form (10.16): for each coordinate u^A its partial velocities
 // and partial angular velocities, then d/dt(∂T/∂u̇^A) − ∂T/∂u^A = Φ_A + Σ_k λ_k a_k^A.
 void write_second_form(std::ostream& out, const System& system, const EquationsOfMotion& eq,

@@ -20,6 +20,13 @@ namespace unidyn {
 
 std::string canonical_text(const Expr& e);
 std::string canonical_latex(const Expr& e);
+// In the notation SymPy's parser (sympify) reads: ** for powers, Abs, pi, and each symbol by its
+// sympy_name.
+std::string canonical_sympy(const Expr& e);
+
+// A symbol's name as SymPy reads it: a rate q' as q_d, an acceleration q'' as q_dd, a multiplier
+// lambda(c) as lambda_c; other names as they are.
+std::string sympy_name(const std::string& name);
 
 // a before b in the canonical order (their canonical texts compared).
 bool canonical_less(const Expr& a, const Expr& b);
