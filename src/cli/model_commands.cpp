@@ -5,6 +5,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -27,6 +28,7 @@
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/io/textbook_equations.hpp"
 #include "unidyn/kinematics/integrability.hpp"
+#include "unidyn/numeric/code_export.hpp"
 #include "unidyn/numeric/compiled_system.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
@@ -181,7 +183,7 @@ EquationFormat parse_format(const std::string& format) {
   if (format == "text") return EquationFormat::text;
   if (format == "latex") return EquationFormat::latex;
   if (format == "json") return EquationFormat::json;
-  throw std::invalid_argument("--format must be text, latex or json");
+  throw std::invalid_argument("--format must be text, latex, json, c, python or matlab");
 }
 
 // (1.21), (8.18): which velocity constraints are integrable, alone and together.
@@ -207,8 +209,38 @@ void write_integrability(const System& system, EquationFormat format) {
   }
 }
 
+// The model's name as an identifier for exported functions: its file's stem, other characters as _.
+std::string function_name(const std::string& path) {
+  std::string stem = std::filesystem::path(path).stem().string();
+  for (char& ch : stem) {
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  }
+  if (stem.empty() || std::isdigit(static_cast<unsigned char>(stem.front())))
+    stem = "model_" + stem;
+  return stem;
+}
+
+// `derive --format c|python|matlab`: the equations as a self-contained function.
+int run_export(const ModelCommands& c, const System& system, const std::string& path) {
+  if (c.method != "lagrange" && c.method != "kane") {
+    throw std::invalid_argument("--format " + c.format +
+                                " exports M, f, A and b: it needs "
+                                "--method lagrange or kane");
+  }
+  const CodeLanguage language = c.format == "c"        ? CodeLanguage::c
+                                : c.format == "python" ? CodeLanguage::python
+                                                       : CodeLanguage::matlab;
+  const EquationsOfMotion eq =
+      c.method == "kane" ? kane_equations(system) : lagrange_equations(system);
+  std::cout << export_code(system, eq, language, function_name(path));
+  return 0;
+}
+
 int run_derive(const ModelCommands& c, const CommandModel& model) {
   const System system = command_system(c, model.system);
+  if (c.format == "c" || c.format == "python" || c.format == "matlab") {
+    return run_export(c, system, model.path);
+  }
   const EquationFormat format = parse_format(c.format);
   if (c.form != "textbook" && c.form != "matrix") {
     throw std::invalid_argument("--form must be textbook or matrix");
@@ -559,7 +591,11 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.derive->add_option("model", c.model, "MODEL file or bundled model name")->required();
   c.derive->add_option("--method", c.method, "lagrange | kane | second-form | newton-euler")
       ->capture_default_str();
-  c.derive->add_option("--format", c.format, "text | latex | json")->capture_default_str();
+  c.derive
+      ->add_option("--format", c.format,
+                   "text | latex | json | c | python | matlab (a function computing M, f, A, b "
+                   "and q'')")
+      ->capture_default_str();
   c.derive->add_flag(
       "--standalone", c.standalone,
       "with --format latex: a whole document (article, amsmath) that pdflatex compiles");

@@ -7,7 +7,6 @@
 #include "unidyn/equations/friction.hpp"
 
 namespace unidyn {
-namespace {
 
 // Tape inputs [t, q, q̇, p] (with_accelerations: [t, q, q̇, q̈, λ, p]).
 std::vector<Expr> tape_inputs(const System& system, bool with_accelerations) {
@@ -22,13 +21,15 @@ std::vector<Expr> tape_inputs(const System& system, bool with_accelerations) {
   return inputs;
 }
 
-Tape compile_dynamics(const System& system, const EquationsOfMotion& eq) {
+Tape dynamics_tape(const System& system, const EquationsOfMotion& eq) {
   std::vector<Expr> outputs = eq.mass_matrix.data;
   outputs.insert(outputs.end(), eq.forcing.begin(), eq.forcing.end());
   outputs.insert(outputs.end(), eq.constraint_matrix.data.begin(), eq.constraint_matrix.data.end());
   outputs.insert(outputs.end(), eq.constraint_bias.begin(), eq.constraint_bias.end());
   return Tape::compile(outputs, tape_inputs(system, false));
 }
+
+namespace {
 
 Tape compile_constraints(const System& system, const EquationsOfMotion& eq) {
   std::vector<Expr> outputs = eq.constraint_matrix.data;
@@ -69,7 +70,7 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
     : n_(system.coordinates().size()),
       m_(system.constraints.size()),
       p_(system.parameters.size()),
-      dynamics_(compile_dynamics(system, equations)),
+      dynamics_(dynamics_tape(system, equations)),
       constraints_(compile_constraints(system, equations)),
       observer_(compile_observer(system, equations)) {
   const std::vector<FrictionContact> contacts = friction_contacts(system);

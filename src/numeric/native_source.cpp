@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "tape_language.hpp"
 #include "unidyn/numeric/native_code.hpp"
 
 namespace unidyn {
@@ -16,61 +17,6 @@ std::string literal(double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%a", value);
   return buffer;
-}
-
-// The C++ expression of a single-result operation on x = r[a] (and r[b]); as the tape's execute().
-std::string operation(TapeOp op, const std::string& x, const std::string& y) {
-  switch (op) {
-    case TapeOp::add:
-      return x + " + " + y;
-    case TapeOp::sub:
-      return x + " - " + y;
-    case TapeOp::mul:
-      return x + " * " + y;
-    case TapeOp::div:
-      return x + " / " + y;
-    case TapeOp::neg:
-      return "-" + x;
-    case TapeOp::recip:
-      return "1.0 / " + x;
-    case TapeOp::sqrt:
-      return "std::sqrt(" + x + ")";
-    case TapeOp::pow:
-      return "std::pow(" + x + ", " + y + ")";
-    case TapeOp::sin:
-      return "std::sin(" + x + ")";
-    case TapeOp::cos:
-      return "std::cos(" + x + ")";
-    case TapeOp::sincos:
-      break;  // two results: written by the caller
-    case TapeOp::tan:
-      return "std::tan(" + x + ")";
-    case TapeOp::asin:
-      return "std::asin(" + x + ")";
-    case TapeOp::acos:
-      return "std::acos(" + x + ")";
-    case TapeOp::atan:
-      return "std::atan(" + x + ")";
-    case TapeOp::atan2:
-      return "std::atan2(" + x + ", " + y + ")";
-    case TapeOp::sinh:
-      return "std::sinh(" + x + ")";
-    case TapeOp::cosh:
-      return "std::cosh(" + x + ")";
-    case TapeOp::tanh:
-      return "std::tanh(" + x + ")";
-    case TapeOp::exp:
-      return "std::exp(" + x + ")";
-    case TapeOp::log:
-      return "std::log(" + x + ")";
-    case TapeOp::abs:
-      return "std::fabs(" + x + ")";
-    case TapeOp::sign:
-      return "(" + x + " > 0.0 ? 1.0 : (" + x + " < 0.0 ? -1.0 : 0.0))";
-    case TapeOp::step:
-      return "(" + x + " > 0.0 ? 1.0 : (" + x + " < 0.0 ? 0.0 : 0.5))";
-  }
-  return {};
 }
 
 }  // namespace
@@ -93,7 +39,8 @@ std::string tape_source(const Tape& tape, std::string_view name) {
       os << "  { const double x = " << x << "; r" << i.dst << " = std::sin(x); " << y
          << " = std::cos(x); }\n";
     } else {
-      os << "  r" << i.dst << " = " << operation(i.op, x, y) << ";\n";
+      os << "  r" << i.dst << " = " << detail::tape_operation(i.op, x, y, detail::TapeLanguage::cpp)
+         << ";\n";
     }
   }
   for (std::size_t k = 0; k < tape.output_count(); ++k) {

@@ -67,6 +67,13 @@ struct CompileOptions {
   NativeOptions native_options;
 };
 
+// Tape inputs [t, q, q̇, p] (with_accelerations: [t, q, q̇, q̈, λ, p]).
+std::vector<Expr> tape_inputs(const System& system, bool with_accelerations);
+
+// The dynamics as a tape of inputs [t, q, q̇, p] (tape_inputs) and outputs M (row by row), f, A
+// (row by row) and b of M q̈ = f + Aᵀ λ, A q̈ + b = 0.
+Tape dynamics_tape(const System& system, const EquationsOfMotion& eq);
+
 class CompiledSystem {
  public:
   CompiledSystem(const System& system, const EquationsOfMotion& equations,
