@@ -1,10 +1,12 @@
 // Evaluating an expression in doubles, node by node.
 #include "unidyn/symbolic/real_value.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace unidyn {
 namespace {
@@ -62,13 +64,18 @@ class Evaluator {
       return GiNaC::is_a<GiNaC::numeric>(v) ? (*this)(v) : std::nullopt;
     }
     if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+      // the operands' values in increasing order, not GiNaC's (which changes from build to
+      // build): the same rounding whatever order the terms are kept in
       const bool sum = GiNaC::is_a<GiNaC::add>(e);
-      double result = sum ? 0.0 : 1.0;
+      std::vector<double> operands;
       for (const auto& operand : e) {
         const auto v = (*this)(operand);
         if (!v) return std::nullopt;
-        result = sum ? result + *v : result * *v;
+        operands.push_back(*v);
       }
+      std::sort(operands.begin(), operands.end());
+      double result = sum ? 0.0 : 1.0;
+      for (const double v : operands) result = sum ? result + v : result * v;
       return result;
     }
     if (GiNaC::is_a<GiNaC::power>(e)) {
