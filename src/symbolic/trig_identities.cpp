@@ -82,8 +82,12 @@ bool reads_negated(const Expr& x) {
   return false;
 }
 // cos x and sin x with the argument's sign as it reads best: cos(−x) = cos x, sin(−x) = −sin x.
-Expr cosine(const Expr& x) { return GiNaC::cos(reads_negated(x) ? -x : x); }
-Expr sine(const Expr& x) { return reads_negated(x) ? -GiNaC::sin(-x) : GiNaC::sin(x); }
+Expr cosine(const Expr& x) {
+  return GiNaC::cos(reads_negated(x) ? -x : x);
+}
+Expr sine(const Expr& x) {
+  return reads_negated(x) ? -GiNaC::sin(-x) : GiNaC::sin(x);
+}
 
 // Two readings that combine into one term, or none:
 //   σ1 R cos A cos B + σ2 R sin A sin B = σ1 R cos(A − B) (σ1 = σ2) or σ1 R cos(A + B)
