@@ -242,8 +242,8 @@ int run_derive(const ModelCommands& c, const CommandModel& model) {
     return run_export(c, system, model.path);
   }
   const EquationFormat format = parse_format(c.format);
-  if (c.form != "textbook" && c.form != "matrix") {
-    throw std::invalid_argument("--form must be textbook or matrix");
+  if (c.form != "textbook" && c.form != "matrix" && c.form != "zees") {
+    throw std::invalid_argument("--form must be textbook, zees or matrix");
   }
   if (c.standalone && format != EquationFormat::latex) {
     throw std::invalid_argument("--standalone makes a LaTeX document: it needs --format latex");
@@ -262,8 +262,8 @@ int run_derive(const ModelCommands& c, const CommandModel& model) {
     // as the book prints them, or as the matrices
     const EquationsOfMotion eq =
         c.method == "kane" ? kane_equations(system) : lagrange_equations(system);
-    if (c.form == "textbook" && format != EquationFormat::json) {
-      write_textbook_lagrange(std::cout, system, eq, format);
+    if (c.form != "matrix" && format != EquationFormat::json) {
+      write_textbook_lagrange(std::cout, system, eq, format, c.form == "zees");
     } else {
       write_lagrange(std::cout, system, eq, format);
     }
@@ -602,7 +602,8 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.derive
       ->add_option("--form", c.form,
                    "textbook (each equation as the book prints it: M q'' terms, then products of "
-                   "rates, then the rest) | matrix (M q'' = f + A^T lambda)")
+                   "rates, then the rest) | zees (the same with repeated subexpressions named z1, "
+                   "z2, ...) | matrix (M q'' = f + A^T lambda)")
       ->capture_default_str();
   c.derive->add_flag("--reduced", c.reduced,
                      "approach II: eliminate the constraints that can be solved for a coordinate");

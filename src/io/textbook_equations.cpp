@@ -3,6 +3,7 @@
 
 #include <cctype>
 
+#include "unidyn/symbolic/common_subexpressions.hpp"
 #include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/textbook_form.hpp"
 
@@ -67,63 +68,95 @@ std::string latex_equation(const std::string& lead, const std::vector<std::strin
 }
 
 void write_textbook_lagrange(std::ostream& out, const System& system, const EquationsOfMotion& eq,
-                             EquationFormat format) {
+                             EquationFormat format, bool intermediates) {
   const bool latex = format == EquationFormat::latex;
   const auto& q = system.coordinates();
-  std::vector<Expr> rates, accelerations;
+  std::vector<Expr> rates, accelerations, multipliers;
   for (const auto& c : q) {
     rates.push_back(c.rate);
     accelerations.push_back(c.acceleration);
   }
-  const auto T_terms = texts(group_by_monomials(eq.kinetic_energy, rates), latex);
-  const Expr U = textbook_simplify(eq.potential_energy);
-  const std::string U_text = latex ? to_latex(U) : to_text(U);
+  for (const auto& c : system.constraints) multipliers.push_back(c.multiplier);
+  // every grouped term: T, U, each equation's left and right side (Σ_j M_ij q̈^j and −f_i by
+  // products of rates = Σ_k λ_k a_k^i), each constraint
+  std::vector<GroupedTerm> T = group_by_monomials(eq.kinetic_energy, rates);
+  std::vector<GroupedTerm> U{{textbook_simplify(eq.potential_energy), 1}};
+  std::vector<std::vector<GroupedTerm>> left(q.size()), right(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    for (std::size_t j = 0; j < q.size(); ++j) {
+      const Expr m = textbook_simplify(eq.mass_matrix(i, j));
+      if (!m.is_zero()) left[i].push_back({m, accelerations[j]});
+    }
+    for (GroupedTerm& t : group_by_monomials(-eq.forcing[i], rates)) left[i].push_back(t);
+    Expr sum = 0;
+    for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+      sum += multipliers[k] * eq.constraint_matrix(k, i);
+    }
+    right[i] = group_by_monomials(sum, multipliers);
+  }
+  std::vector<GroupedTerm> psi;
+  for (const auto& c : system.constraints) psi.push_back({textbook_simplify(c.expression), 1});
+  // --form zees: the coefficients' repeated subexpressions named z1, z2, …
+  std::vector<GroupedTerm*> all;
+  for (auto* group : {&T, &U, &psi}) {
+    for (GroupedTerm& t : *group) all.push_back(&t);
+  }
+  for (auto* sides : {&left, &right}) {
+    for (auto& group : *sides) {
+      for (GroupedTerm& t : group) all.push_back(&t);
+    }
+  }
+  Intermediates z;
+  if (intermediates) {
+    std::vector<Expr> coefficients;
+    for (const GroupedTerm* t : all) coefficients.push_back(t->coefficient);
+    z = common_subexpressions(coefficients);
+    for (std::size_t k = 0; k < all.size(); ++k) all[k]->coefficient = z.expressions[k];
+  }
+  const std::string U_text =
+      latex ? to_latex(U.front().coefficient) : to_text(U.front().coefficient);
   const bool constrained = !system.constraints.empty();
   out << (latex ? "% " : "") << system.name << ": Lagrange's equations"
-      << (constrained ? ", the constraint forces sum_k lambda_k a_k on the right" : "") << "\n";
+      << (constrained ? ", the constraint forces sum_k lambda_k a_k on the right" : "")
+      << (intermediates ? ", with intermediate quantities z" : "") << "\n";
   // the lines of align, each labelled (eq:<coordinate> or eq:<constraint>)
   std::vector<std::string> lines;
+  for (std::size_t k = 0; k < z.names.size(); ++k) {
+    if (latex) {
+      lines.push_back("  & " + to_latex(z.names[k]) + " = " + to_latex(z.values[k]) +
+                      " \\nonumber");
+    } else {
+      out << "  " << z.names[k] << " = " << to_text(z.values[k]) << "\n";
+    }
+  }
   if (latex) {
-    lines.push_back(latex_equation("T = ", T_terms, " \\nonumber"));
+    lines.push_back(latex_equation("T = ", texts(T, true), " \\nonumber"));
     lines.push_back("  & U = " + U_text + " \\nonumber");
   } else {
-    out << "  T = " << join_terms(T_terms) << "\n";
+    out << "  T = " << join_terms(texts(T, false)) << "\n";
     out << "  U = " << U_text << "\n";
   }
   for (std::size_t i = 0; i < q.size(); ++i) {
-    // Σ_j M_ij q̈^j, then −f_i by products of rates
-    std::vector<GroupedTerm> left;
-    for (std::size_t j = 0; j < q.size(); ++j) {
-      const Expr m = textbook_simplify(eq.mass_matrix(i, j));
-      if (!m.is_zero()) left.push_back({m, accelerations[j]});
-    }
-    for (GroupedTerm& t : group_by_monomials(-eq.forcing[i], rates)) left.push_back(t);
-    // Σ_k λ_k a_k^i, by multiplier
-    Expr right = 0;
-    std::vector<Expr> multipliers;
-    for (std::size_t k = 0; k < system.constraints.size(); ++k) {
-      right += system.constraints[k].multiplier * eq.constraint_matrix(k, i);
-      multipliers.push_back(system.constraints[k].multiplier);
-    }
-    const std::string rhs = join_terms(texts(group_by_monomials(right, multipliers), latex));
+    const std::string rhs = join_terms(texts(right[i], latex));
     if (latex) {
       lines.push_back(
-          latex_equation("", texts(left, true), " = " + rhs + " \\label{eq:" + q[i].name + "}"));
+          latex_equation("", texts(left[i], true), " = " + rhs + " \\label{eq:" + q[i].name + "}"));
     } else {
-      out << "  [" << q[i].name << "]  " << join_terms(texts(left, false)) << " = " << rhs << "\n";
+      out << "  [" << q[i].name << "]  " << join_terms(texts(left[i], false)) << " = " << rhs
+          << "\n";
     }
   }
-  for (const auto& c : system.constraints) {
-    const Expr psi = textbook_simplify(c.expression);
+  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+    const Constraint& c = system.constraints[k];
     if (latex) {
-      lines.push_back("  & " + to_latex(psi) + " = 0" +
+      lines.push_back("  & " + to_latex(psi[k].coefficient) + " = 0" +
                       (c.kind == Constraint::Kind::velocity ? " \\quad\\text{(velocity)}" : "") +
                       " \\label{eq:" + c.name + "}");
     } else {
       out << "  constraint " << c.name << " ("
           << (c.kind == Constraint::Kind::position ? "position" : "velocity")
-          << (c.unilateral ? ", unilateral" : "") << "): " << to_text(psi) << " = 0, multiplier "
-          << to_text(c.multiplier) << "\n";
+          << (c.unilateral ? ", unilateral" : "") << "): " << to_text(psi[k].coefficient)
+          << " = 0, multiplier " << to_text(c.multiplier) << "\n";
     }
   }
   if (latex) {

@@ -23,8 +23,9 @@ TEST(LatexDocuments, PdflatexCompilesEveryForm) {
   for (const char* model : {"spherical-pendulum", "double-pendulum", "heavy-top", "rolling-disk",
                             "pendulum-cart", "kepler", "rotating-hoop", "helix", "chaplygin-car",
                             "two-body", "rotating-cone", "compound-pendulum"}) {
-    for (const char* how : {"--method lagrange", "--method lagrange --form matrix",
-                            "--method newton-euler", "--method second-form"}) {
+    for (const char* how :
+         {"--method lagrange", "--method lagrange --form matrix", "--method lagrange --form zees",
+          "--method newton-euler", "--method second-form"}) {
       const Outcome r =
           run("derive " + std::string(model) + " " + how + " --format latex --standalone");
       ASSERT_EQ(r.status, 0) << model << " " << how << ": " << r.err;

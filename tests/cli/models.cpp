@@ -188,6 +188,23 @@ TEST(CliModels, DeriveText) {
   expect_bad_input(run("derive spherical-pendulum --form pretty"), "--form pretty");
 }
 
+// `derive --form zees`: the repeated subexpressions named z1, z2, … before the equations, which
+// are then shorter than in the textbook form.
+TEST(CliModels, DeriveZees) {
+  const Outcome zees = run("derive hinged-bodies --form zees");
+  const Outcome textbook = run("derive hinged-bodies");
+  ASSERT_EQ(zees.status, 0) << zees.err;
+  ASSERT_EQ(textbook.status, 0) << textbook.err;
+  EXPECT_EQ(lines_starting(zees.out, "  z1 = ").size(), 1u) << zees.out;
+  const auto equations_length = [](const std::string& out) {
+    std::size_t length = 0;
+    for (const std::string& line : lines_starting(out, "  [")) length += line.size();
+    return length;
+  };
+  EXPECT_EQ(lines_starting(zees.out, "  [").size(), 7u);
+  EXPECT_LT(equations_length(zees.out), equations_length(textbook.out));
+}
+
 // `derive --format latex`: the textbook form in an align environment, one labelled equation per
 // coordinate (\ddot{\phi}, \dot{\theta}^{2}, \sin\phi as the book writes them), T and U not
 // numbered; the matrix form in display math with an aligned block.

@@ -16,7 +16,9 @@ namespace unidyn {
 // combined, sin² + cos² = 1 used, common factors out. Then each constraint. LaTeX: an align
 // environment, one equation per coordinate labelled eq:<coordinate> (a constraint eq:<name>), long
 // ones broken into lines.
+// With `intermediates` (`--form zees`), the subexpressions repeated among all the coefficients are
+// named z1, z2, … first (symbolic/common_subexpressions.hpp), MotionGenesis-style, and used.
 void write_textbook_lagrange(std::ostream& out, const System& system, const EquationsOfMotion& eq,
-                             EquationFormat format);
+                             EquationFormat format, bool intermediates = false);
 
 }  // namespace unidyn
