@@ -45,10 +45,21 @@ ForcePoint ModelReader::force_point(const YAML::Node& node, const System& system
   return {std::nullopt, point, std::nullopt};
 }
 
-// The angle of a torsion spring or damper (`angle:`, with `on:` the body it turns) and the moments
-// of a unit torque about it: a joint's angle, or one of a body's Euler angles.
+// The keys of a torsion spring or damper checked, then its angle (`angle:`, with `on:` the body it
+// turns) and the moments of a unit torque about it: a joint's angle, or one of a body's Euler
+// angles.
 std::pair<std::size_t, std::vector<AngleTorque>> ModelReader::torsion_angle(
-    const YAML::Node& spec, const System& system, const std::string& what) {
+    const YAML::Node& spec, const System& system, const std::string& what,
+    const std::string& required, const std::set<std::string>& optional) {
+  // its keys: on, angle, the required constant (stiffness or coefficient) and the optional ones
+  expect_map(spec, what);
+  std::set<std::string> keys = optional;
+  keys.insert({"on", "angle", required});
+  expect_keys(spec, keys, what);
+  if (!spec["angle"] || !spec[required]) {
+    fail(spec, "a " + what + " needs angle: (a joint's angle or a body's Euler angle) and " +
+                   required + ":");
+  }
   std::optional<std::size_t> on;
   if (spec["on"]) {
     on = system.find_body(scalar(spec["on"], "on"));
@@ -181,14 +192,8 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
         }
         element = gravity_gradient(system, *b, GM, center);
       } else if (kind == "torsion_spring") {
-        expect_map(spec, "torsion_spring");
-        expect_keys(spec, {"on", "angle", "stiffness", "rest_angle"}, "torsion_spring");
-        if (!spec["angle"] || !spec["stiffness"]) {
-          fail(spec,
-               "a torsion_spring needs angle: (a joint's angle or a body's Euler angle) and "
-               "stiffness:");
-        }
-        const auto [q, unit_torque] = torsion_angle(spec, system, "torsion_spring");
+        const auto [q, unit_torque] =
+            torsion_angle(spec, system, "torsion_spring", "stiffness", {"rest_angle"});
         const Expr K = scalar_expr(spec["stiffness"], scope, "stiffness");
         expect_state_only(spec["stiffness"], K, system, "a stiffness");
         Expr rest = 0;
@@ -198,14 +203,7 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
         }
         element = torsion_spring(system, q, unit_torque, K, rest);
       } else if (kind == "torsion_damper") {
-        expect_map(spec, "torsion_damper");
-        expect_keys(spec, {"on", "angle", "coefficient"}, "torsion_damper");
-        if (!spec["angle"] || !spec["coefficient"]) {
-          fail(spec,
-               "a torsion_damper needs angle: (a joint's angle or a body's Euler angle) and "
-               "coefficient:");
-        }
-        const auto [q, unit_torque] = torsion_angle(spec, system, "torsion_damper");
+        const auto [q, unit_torque] = torsion_angle(spec, system, "torsion_damper", "coefficient");
         const Expr c = scalar_expr(spec["coefficient"], scope, "coefficient");
         expect_state_only(spec["coefficient"], c, system, "a damping coefficient");
         element = torsion_damper(system, q, unit_torque, c);

@@ -250,9 +250,9 @@ class ModelReader {
   void read_definitions(const YAML::Node& node, System& system);
   void read_forces(const YAML::Node& node, System& system);
   ForcePoint force_point(const YAML::Node& node, const System& system, const Scope& scope);
-  std::pair<std::size_t, std::vector<AngleTorque>> torsion_angle(const YAML::Node& spec,
-                                                                 const System& system,
-                                                                 const std::string& what);
+  std::pair<std::size_t, std::vector<AngleTorque>> torsion_angle(
+      const YAML::Node& spec, const System& system, const std::string& what,
+      const std::string& required, const std::set<std::string>& optional = {});
   void read_constraints(const YAML::Node& node, System& system);
   void read_joint(const YAML::Node& spec, const std::string& name, System& system);
   void read_rolling(const YAML::Node& spec, const std::string& name, System& system);

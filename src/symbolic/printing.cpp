@@ -127,7 +127,8 @@ Expr simplify(const Expr& e) {
     back[s.back()] = GiNaC::sin(x);
     back[c.back()] = GiNaC::cos(x);
   }
-  const Expr fraction = GiNaC::numer_denom(canonical_normal(best.subs(to_symbols)));
+  // numer_denom normalises by itself; its sign is fixed by canonical_normal below
+  const Expr fraction = GiNaC::numer_denom(best.subs(to_symbols));
   const Expr numerator = expand_within_budget(fraction.op(0), "simplifying"),
              denominator = expand_within_budget(fraction.op(1), "simplifying");
   const std::size_t n = arguments.size();

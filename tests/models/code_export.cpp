@@ -96,6 +96,16 @@ std::vector<std::vector<double>> states_of(const std::string& model, std::size_t
   return states;
 }
 
+// The states a driver reads, one line each, every digit of the doubles.
+void write_states(const std::string& path, const std::vector<std::vector<double>>& states) {
+  std::ofstream out(path);
+  out.precision(17);
+  for (const auto& s : states) {
+    for (double x : s) out << x << " ";
+    out << "\n";
+  }
+}
+
 const char* const kModels[] = {"double-pendulum", "rolling-disk", "torque-free-quaternion"};
 
 TEST(CodeExport, CompiledCGivesTheSimulationsAccelerations) {
@@ -123,13 +133,7 @@ TEST(CodeExport, CompiledCGivesTheSimulationsAccelerations) {
            << "    printf(\"\\n\");\n  }\n  return 0;\n}\n";
     std::ofstream(dir + "/main.c") << driver.str();
     const auto states = states_of(model, n);
-    std::ofstream in(dir + "/states.txt");
-    in.precision(17);
-    for (const auto& s : states) {
-      for (double x : s) in << x << " ";
-      in << "\n";
-    }
-    in.close();
+    write_states(dir + "/states.txt", states);
     const std::string build = "cd '" + dir +
                               "' && cc -std=c99 -O2 -Wall -Werror -o eom eom.c main.c -lm " +
                               ">build.log 2>&1 && ./eom <states.txt >out.txt 2>&1";
@@ -155,13 +159,7 @@ TEST(CodeExport, PythonGivesTheSimulationsAccelerations) {
         << "    qdd, lam = eom.accelerations(x[0], x[1:" << n + 1 << "], x[" << n + 1 << ":], p)\n"
         << "    print(' '.join(repr(v) for v in qdd + lam))\n";
     const auto states = states_of(model, n);
-    std::ofstream in(dir + "/states.txt");
-    in.precision(17);
-    for (const auto& s : states) {
-      for (double x : s) in << x << " ";
-      in << "\n";
-    }
-    in.close();
+    write_states(dir + "/states.txt", states);
     const std::string command = "cd '" + dir + "' && python3 main.py <states.txt >out.txt 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << model << ": " << read_all(dir + "/out.txt");
     expect_same_solution(model, numbers_in(read_all(dir + "/out.txt")), states);
