@@ -136,9 +136,9 @@ class Bench:
         self.build = os.path.abspath(build)
         self.quick = quick
         self.rng = random.Random(2026)
-        self.unidyn = os.path.join(build, "bench", "unidyn_bench")
-        self.mujoco = os.path.join(build, "bench", "peers", "peer_mujoco")
-        self.simbody = os.path.join(build, "bench", "peers", "peer_simbody")
+        self.unidyn = os.path.join(self.build, "bench", "unidyn_bench")
+        self.mujoco = os.path.join(self.build, "bench", "peers", "peer_mujoco")
+        self.simbody = os.path.join(self.build, "bench", "peers", "peer_simbody")
         self.sympy = [sys.executable, os.path.join(HERE, "sympy", "derive.py")]
         self.lines = []
 
