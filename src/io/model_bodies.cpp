@@ -1,6 +1,8 @@
 // The model file's parameters, coordinates, particles and bodies (inertia, rotation, Euler charts).
 #include "model_reader.hpp"
 
+#include "unidyn/symbolic/printing.hpp"
+
 namespace unidyn::model_reading {
 
 void ModelReader::read_parameters(const YAML::Node& node, System& system) {
@@ -162,10 +164,13 @@ TensorExpr ModelReader::rotation(const YAML::Node& node, const System& system) {
     expect_keys(node, {"axis", "angle"}, "an axis-angle rotation");
     if (!node["angle"]) fail(node, "an axis-angle rotation needs angle:");
     const VectorExpr axis = vector_expr(node["axis"], scope, "axis");
-    if (expand_within_budget(dot(axis, axis), "an axis").is_zero()) {
+    // |axis|² simplified: [sin(lam), 0, -cos(lam)] is a unit axis, not one over √(sin² + cos²)
+    const Expr length_squared = simplify(dot(axis, axis));
+    if (length_squared.is_zero()) {
       fail(node["axis"], "the axis of a rotation must not be the zero vector");
     }
-    Q = axis_angle_rotation_expr(axis / norm(axis), scalar_expr(node["angle"], scope, "angle"));
+    Q = axis_angle_rotation_expr(axis / GiNaC::sqrt(length_squared),
+                                 scalar_expr(node["angle"], scope, "angle"));
   } else if (node["quaternion"]) {
     expect_keys(node, {"quaternion"}, "a quaternion rotation");
     const YAML::Node& e = node["quaternion"];

@@ -371,7 +371,25 @@ int canonical_sign(const Expr& e) {
 
 // GiNaC's normal form n/d is unique up to the sign of both, which GiNaC fixes by a leading
 // coefficient in its own variable order: here by the canonical order instead.
+namespace {
+
+// Whether e divides by anything but numbers (a negative or fractional power of a non-number).
+bool has_denominator(const Expr& e) {
+  if (is_exactly_a<GiNaC::power>(e) && !GiNaC::is_a<GiNaC::numeric>(e.op(0)) &&
+      !e.op(1).info(GiNaC::info_flags::nonnegint)) {
+    return true;
+  }
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    if (has_denominator(e.op(i))) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 Expr canonical_normal(const Expr& e) {
+  // a polynomial (sines and cosines counted as symbols) is its own normal form
+  if (!has_denominator(e)) return e;
   const Expr fraction = GiNaC::numer_denom(GiNaC::normal(e));
   const Expr numerator = fraction.op(0), denominator = fraction.op(1);
   if (!is_exactly_a<GiNaC::add>(denominator)) return numerator / denominator;

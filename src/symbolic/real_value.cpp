@@ -6,6 +6,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace unidyn {
@@ -36,70 +37,127 @@ std::optional<double> apply(const std::string& name, double x, double y) {
   return f->second(x);
 }
 
+// Values at several points at once, NaN where not a finite real: each node is looked at once
+// (shared nodes too) whatever the number of points.
+using Values = std::vector<double>;
+
 class Evaluator {
  public:
-  explicit Evaluator(const GiNaC::exmap& values) : values_(values) {}
+  explicit Evaluator(const std::vector<GiNaC::exmap>& points) : points_(points) {}
 
-  std::optional<double> operator()(const Expr& e) const {
-    std::optional<double> v = value(e);
-    if (v && !std::isfinite(*v)) return std::nullopt;
-    return v;
+  const Values& operator()(const Expr& e) const {
+    // a node shared by several parents once (the node held: op() makes some anew, and a freed
+    // node's address may be another's next)
+    const GiNaC::basic* node = &GiNaC::ex_to<GiNaC::basic>(e);
+    if (const auto it = memo_.find(node); it != memo_.end()) return it->second.second;
+    Values v = value(e);
+    for (double& x : v) {
+      if (!std::isfinite(x)) x = NAN;
+    }
+    return memo_.emplace(node, std::make_pair(e, std::move(v))).first->second.second;
   }
 
  private:
-  std::optional<double> value(const Expr& e) const {
-    if (GiNaC::is_a<GiNaC::numeric>(e)) {
+  Values constant(double x) const { return Values(points_.size(), x); }
+
+  // a scalar function of one or two values at each point
+  template <typename F>
+  Values each(const Values& x, const Values& y, F f) const {
+    Values r(x.size());
+    for (std::size_t k = 0; k < x.size(); ++k) r[k] = f(x[k], y[k]);
+    return r;
+  }
+
+  Values value(const Expr& e) const {
+    using GiNaC::is_exactly_a;
+    if (is_exactly_a<GiNaC::numeric>(e)) {
       const auto& n = GiNaC::ex_to<GiNaC::numeric>(e);
-      if (!n.is_real()) return std::nullopt;
-      return n.to_double();
+      return constant(n.is_real() ? n.to_double() : NAN);
+    }
+    if (is_exactly_a<GiNaC::add>(e) || is_exactly_a<GiNaC::mul>(e)) {
+      // the operands' values in increasing order, not GiNaC's (which changes from build to
+      // build): the same rounding whatever order the terms are kept in
+      const bool sum = is_exactly_a<GiNaC::add>(e);
+      std::vector<const Values*> operands;
+      for (const auto& operand : e) operands.push_back(&(*this)(operand));
+      Values result(points_.size());
+      std::vector<double> at(operands.size());
+      for (std::size_t k = 0; k < result.size(); ++k) {
+        bool defined = true;
+        for (std::size_t i = 0; i < operands.size(); ++i) {
+          at[i] = (*operands[i])[k];
+          defined = defined && !std::isnan(at[i]);
+        }
+        if (!defined) {
+          result[k] = NAN;
+          continue;
+        }
+        std::sort(at.begin(), at.end());
+        double r = sum ? 0.0 : 1.0;
+        for (const double v : at) r = sum ? r + v : r * v;
+        result[k] = r;
+      }
+      return result;
+    }
+    if (is_exactly_a<GiNaC::power>(e)) {
+      return each((*this)(e.op(0)), (*this)(e.op(1)), [](double base, double exponent) {
+        if (base == 0.0 && exponent <= 0.0) return double(NAN);  // division by zero
+        return std::pow(base, exponent);
+      });
     }
     if (GiNaC::is_a<GiNaC::symbol>(e)) {
-      const auto found = values_.find(e);
-      if (found == values_.end() || !GiNaC::is_a<GiNaC::numeric>(found->second))
-        return std::nullopt;
-      return (*this)(found->second);
+      Values r(points_.size());
+      for (std::size_t k = 0; k < r.size(); ++k) {
+        const auto found = points_[k].find(e);
+        r[k] = found == points_[k].end() || !GiNaC::is_a<GiNaC::numeric>(found->second)
+                   ? NAN
+                   : (*this)(found->second)[k];
+      }
+      return r;
     }
     if (GiNaC::is_a<GiNaC::constant>(e)) {
       const Expr v = GiNaC::evalf(e);
-      return GiNaC::is_a<GiNaC::numeric>(v) ? (*this)(v) : std::nullopt;
-    }
-    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
-      // the operands' values in increasing order, not GiNaC's (which changes from build to
-      // build): the same rounding whatever order the terms are kept in
-      const bool sum = GiNaC::is_a<GiNaC::add>(e);
-      std::vector<double> operands;
-      for (const auto& operand : e) {
-        const auto v = (*this)(operand);
-        if (!v) return std::nullopt;
-        operands.push_back(*v);
-      }
-      std::sort(operands.begin(), operands.end());
-      double result = sum ? 0.0 : 1.0;
-      for (const double v : operands) result = sum ? result + v : result * v;
-      return result;
-    }
-    if (GiNaC::is_a<GiNaC::power>(e)) {
-      const auto base = (*this)(e.op(0)), exponent = (*this)(e.op(1));
-      if (!base || !exponent) return std::nullopt;
-      if (*base == 0.0 && *exponent <= 0.0) return std::nullopt;  // division by zero
-      return std::pow(*base, *exponent);
+      return GiNaC::is_a<GiNaC::numeric>(v) ? (*this)(v) : constant(NAN);
     }
     if (GiNaC::is_a<GiNaC::function>(e) && (e.nops() == 1 || e.nops() == 2)) {
-      const auto x = (*this)(e.op(0));
-      const auto y = e.nops() == 2 ? (*this)(e.op(1)) : x;
-      if (!x || !y) return std::nullopt;
-      return apply(GiNaC::ex_to<GiNaC::function>(e).get_name(), *x, *y);
+      const Values& x = (*this)(e.op(0));
+      const Values& y = e.nops() == 2 ? (*this)(e.op(1)) : x;
+      const std::string& name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+      if (name != "atan2" && !apply(name, 0.5, 0.5)) return constant(NAN);
+      return each(x, y, [&](double a, double b) {
+        if (std::isnan(a) || std::isnan(b)) return double(NAN);
+        return apply(name, a, b).value_or(NAN);
+      });
     }
-    return std::nullopt;
+    return constant(NAN);
   }
 
-  const GiNaC::exmap& values_;
+  const std::vector<GiNaC::exmap>& points_;
+  mutable std::unordered_map<const GiNaC::basic*, std::pair<Expr, Values>> memo_;
 };
+
+std::optional<double> finite(double x) {
+  if (std::isnan(x)) return std::nullopt;
+  return x;
+}
 
 }  // namespace
 
 std::optional<double> real_value(const Expr& e, const GiNaC::exmap& values) {
-  return Evaluator(values)(e);
+  const std::vector<GiNaC::exmap> points{values};
+  return finite(Evaluator(points)(e)[0]);
+}
+
+std::vector<std::vector<std::optional<double>>> real_values(
+    const std::vector<Expr>& e, const std::vector<GiNaC::exmap>& points) {
+  const Evaluator evaluate(points);
+  std::vector<std::vector<std::optional<double>>> result;
+  for (const Expr& x : e) {
+    const Values& v = evaluate(x);
+    result.emplace_back();
+    for (const double y : v) result.back().push_back(finite(y));
+  }
+  return result;
 }
 
 }  // namespace unidyn

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "unidyn/equations/lagrange.hpp"
+#include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/integrate/simulation.hpp"
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/numeric/compiled_system.hpp"
@@ -52,15 +53,20 @@ struct ModelRun {
 
 // Simulates a system through the whole pipeline with NAME=VALUE overrides; `adjust` may change the
 // options (t_end, output_step, method, rtol) that the model file sets.
+// With `complete`, the values the start leaves out are computed from the constraints first, as
+// the command line does (integrate/initial_state.hpp).
 inline ModelRun run_system(System system,
                            const std::vector<std::pair<std::string, double>>& overrides = {},
-                           const std::function<void(SimulationOptions&)>& adjust = {}) {
+                           const std::function<void(SimulationOptions&)>& adjust = {},
+                           bool complete = false) {
   ModelRun run{std::move(system), {}, {}, {}};
   SimulationOptions options = simulation_options(run.system.simulate);
   if (adjust) adjust(options);
   const CompiledSystem compiled(run.system, lagrange_equations(run.system));
   run.columns = simulation_columns(run.system);
-  run.summary = simulate(run.system, compiled, initial_state(run.system, overrides), options,
+  SimulationStart start = initial_state(run.system, overrides);
+  if (complete) complete_initial_state(run.system, compiled, start);
+  run.summary = simulate(run.system, compiled, start, options,
                          [&](const std::vector<double>& row) { run.rows.push_back(row); });
   return run;
 }

@@ -14,8 +14,9 @@ struct EquivalenceReport {
   // Newton projected minus Lagrange, per coordinate, after simplification.
   std::vector<Expr> symbolic_residual;
   bool symbolic_zero = false;
-  // The same evaluated at random states (q, q̇, q̈, t in [−1, 1], parameters at their values):
-  // the largest |residual| relative to the largest term of Lagrange's rows.
+  // The same evaluated in doubles at random states (q, q̇, q̈, t in [−1, 1], parameters at their
+  // values): the largest |residual| relative to the larger of the sum of Lagrange's terms and the
+  // sum of the residual's own terms (the scale of the round-off where they cancel).
   int states = 0;
   double numeric_relative_residual = 0.0;
 };

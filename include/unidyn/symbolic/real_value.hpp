@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "unidyn/symbolic/expression.hpp"
 
@@ -12,5 +13,10 @@ namespace unidyn {
 // e at `values` (symbol → number): the finite real it evaluates to, or nothing (a division by
 // zero, the logarithm of a negative number, a symbol without a value, an unknown function).
 std::optional<double> real_value(const Expr& e, const GiNaC::exmap& values);
+
+// Each of e at each of the points: result[i][k] is e[i] at points[k]; each node of the
+// expressions (shared ones too) is looked at once for all the points.
+std::vector<std::vector<std::optional<double>>> real_values(
+    const std::vector<Expr>& e, const std::vector<GiNaC::exmap>& points);
 
 }  // namespace unidyn
