@@ -22,6 +22,7 @@ import random
 import subprocess
 import sys
 import tempfile
+import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -327,6 +328,40 @@ class Bench:
                      f"{kane['source_bytes'] / 1024:.0f} KiB | {native:.0f} ns | {tape:.0f} ns |")
         self.say()
 
+    # 6. Whole commands on large systems ---------------------------------------------------------
+    def large_systems(self):
+        self.say("## 6. Whole commands on large systems: check, derive, code export\n")
+        self.say("Wall time of the `unidyn` process (fixed layout re-exec, reading, deriving, "
+                 "simplifying, printing), one run each; `derive --format c`: the operations of "
+                 "M, f and the constraint rows after common-subexpression elimination (Kane's "
+                 "form). Goals of issue 13: check and derive of the bicycle ≤ 2 s, of the 10-link "
+                 "pendulum ≤ 0.5 s, ≤ 2 400 operations for the bicycle. A command past its time "
+                 "limit shows as '>'.\n")
+        self.say("| model | check | derive --form matrix | derive (textbook) | derive --format c "
+                 "--method kane | operations |")
+        self.say("|---|---|---|---|---|---|")
+        cli = os.path.join(self.build, "unidyn")
+        limit = 20 if self.quick else 300
+        with tempfile.TemporaryDirectory() as scratch:
+            pendulum = os.path.join(scratch, "pendulum-10.yaml")
+            with open(pendulum, "w") as f:
+                f.write(pendulum_model(10))
+            bicycle = os.path.join(ROOT, "models", "bicycle.yaml")
+            for name, path in (("pendulum-10", pendulum), ("bicycle", bicycle)):
+                cells, code = [], ""
+                for extra in (["check"], ["derive", "--form", "matrix"], ["derive"],
+                              ["derive", "--format", "c", "--method", "kane"]):
+                    start = time.perf_counter()
+                    try:
+                        out = subprocess.run([cli] + extra + [path], capture_output=True,
+                                             text=True, timeout=limit, check=True).stdout
+                        cells.append(f"{time.perf_counter() - start:.2f} s")
+                        code = out if "--format" in extra else code
+                    except subprocess.TimeoutExpired:
+                        cells.append(f"> {limit} s")
+                self.say(f"| {name} | " + " | ".join(cells) + f" | {operations(code)} |")
+        self.say()
+
     # 5. Long runs ---------------------------------------------------------------------------------
     def long_runs(self):
         steps = "1e5" if self.quick else "1e7"
@@ -346,6 +381,36 @@ class Bench:
                          f"{r['wall_seconds']:.1f} s | {r['energy_error_first_tenth']:.1e} | "
                          f"{r['energy_error_whole']:.1e} |")
         self.say()
+
+
+def pendulum_model(n):
+    """The n-link pendulum of MODELS.md as a model file's text."""
+    angles = ", ".join(f"q{k}" for k in range(1, n + 1))
+    text = (f"unidyn: 1\nname: pendulum-{n}\nparameters: {{m: 1.0, L: 1.0, g: 9.81}}\n"
+            f"coordinates: [{angles}]\nparticles:\n")
+    theta = ""
+    for k in range(1, n + 1):
+        theta += f" + q{k}" if k > 1 else "q1"
+        before = f"P{k - 1}.position + " if k > 1 else ""
+        text += (f"  P{k}: {{mass: m, position: \"{before}L*[sin({theta}), -cos({theta}), 0]\"}}"
+                 "\n")
+    return text + "forces:\n  - gravity: -g*E2\ninitial: {q1: 0.5}\n"
+
+
+def operations(code):
+    """The arithmetic operations and function calls of `derive --format c` output (loads of
+    q, qd, p, t and constants not counted)."""
+    count = 0
+    for line in code.splitlines():
+        fields = line.strip().rstrip(";").split(" = ", 1)
+        if len(fields) != 2 or not fields[0].startswith("r"):
+            continue
+        value = fields[1]
+        if value.split("[")[0] in ("q", "qd", "p", "t") or value.lstrip("-").replace(".", "", 1)\
+                .replace("e-", "", 1).replace("e+", "", 1).isdigit():
+            continue
+        count += 1
+    return count
 
 
 def machine():
@@ -376,7 +441,7 @@ def main():
     bench.say("Reproduce: `bash bench/run.sh` (builds into build-bench/ and runs "
               "`python3 bench/run.py build-bench`).\n")
     for part in (bench.derivation, bench.right_hand_side, bench.time_to_accuracy, bench.growth,
-                 bench.long_runs, bench.micro):
+                 bench.long_runs, bench.large_systems, bench.micro):
         try:
             part()
         except Exception as error:  # report and go on with the other comparisons

@@ -24,7 +24,9 @@ Expr tidy(const Expr& e) {
     trig.append(GiNaC::sin(x));
     trig.append(GiNaC::cos(x));
   }
-  const Expr collected = trig.nops() > 0 ? GiNaC::collect(e, trig, true) : e;
+  // (not where a sine sits under a root: GiNaC has no degree there)
+  const Expr collected =
+      trig.nops() > 0 && e.is_polynomial(trig) ? GiNaC::collect(e, trig, true) : e;
   // each factor of each term with its common factor out
   const auto tidy_term = [](const Expr& term) {
     if (!is_exactly_a<GiNaC::mul>(term)) return pull_common_factor(term);

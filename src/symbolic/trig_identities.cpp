@@ -19,10 +19,10 @@ using GiNaC::is_exactly_a;
 constexpr std::size_t kMaxCombinedTerms = 400;
 
 bool is_sine(const Expr& f) {
-  return is_exactly_a<GiNaC::function>(f) && f.nops() == 1 && f.is_equal(GiNaC::sin(f.op(0)));
+  return GiNaC::is_the_function<GiNaC::sin_SERIAL>(f);
 }
 bool is_cosine(const Expr& f) {
-  return is_exactly_a<GiNaC::function>(f) && f.nops() == 1 && f.is_equal(GiNaC::cos(f.op(0)));
+  return GiNaC::is_the_function<GiNaC::cos_SERIAL>(f);
 }
 
 // One way to read a term as σ R f(A) g(B), R = |n| K with the term's number n and its other
