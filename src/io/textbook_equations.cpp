@@ -3,9 +3,11 @@
 
 #include <cctype>
 
+#include "unidyn/equations/covariant_form.hpp"
 #include "unidyn/symbolic/common_subexpressions.hpp"
 #include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/textbook_form.hpp"
+#include "unidyn/symbolic/zero_test.hpp"
 
 namespace unidyn {
 namespace {
@@ -79,15 +81,33 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
   for (const auto& c : system.constraints) multipliers.push_back(c.multiplier);
   // every grouped term: T, U, each equation's left and right side (Σ_j M_ij q̈^j and −f_i by
   // products of rates = Σ_k λ_k a_k^i), each constraint
-  std::vector<GroupedTerm> T = group_by_monomials(eq.kinetic_energy, rates);
+  // M entry by entry, M_ji taken from M_ij where they are equal (M is symmetric)
+  const std::size_t n = q.size();
+  ExprMatrix M(n, n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) {
+      const bool mirrored =
+          j < i && vanishes_identically(eq.mass_matrix(i, j) - eq.mass_matrix(j, i)) == true;
+      M(i, j) = mirrored ? M(j, i) : textbook_simplify(eq.mass_matrix(i, j));
+    }
+  }
+  // T and the convective terms read off the short M by the covariant form (4.30) where exact
+  // evaluation shows them equal to the derived ones; else dug out of the derived expressions
+  const std::optional<Expr> quadratic = quadratic_kinetic_energy(system, eq, M);
+  const std::vector<std::optional<Expr>> convective = covariant_convective_terms(system, eq, M);
+  std::vector<GroupedTerm> T = group_by_monomials(quadratic.value_or(eq.kinetic_energy), rates);
   std::vector<GroupedTerm> U{{textbook_simplify(eq.potential_energy), 1}};
   std::vector<std::vector<GroupedTerm>> left(q.size()), right(q.size());
   for (std::size_t i = 0; i < q.size(); ++i) {
     for (std::size_t j = 0; j < q.size(); ++j) {
-      const Expr m = textbook_simplify(eq.mass_matrix(i, j));
-      if (!m.is_zero()) left[i].push_back({m, accelerations[j]});
+      if (!M(i, j).is_zero()) left[i].push_back({M(i, j), accelerations[j]});
     }
-    for (GroupedTerm& t : group_by_monomials(-eq.forcing[i], rates)) left[i].push_back(t);
+    // −f_i = c_i + ∂U/∂q^i − Φ_i
+    const Expr minus_forcing =
+        convective[i]
+            ? *convective[i] + eq.potential_energy.diff(q[i].value) - eq.generalized_force[i]
+            : -eq.forcing[i];
+    for (GroupedTerm& t : group_by_monomials(minus_forcing, rates)) left[i].push_back(t);
     Expr sum = 0;
     for (std::size_t k = 0; k < system.constraints.size(); ++k) {
       sum += multipliers[k] * eq.constraint_matrix(k, i);

@@ -7,9 +7,12 @@
 
 #include <map>
 #include <set>
+#include <unordered_map>
 
 namespace unidyn {
 namespace {
+
+Expr simplify_uncached(const Expr& e);
 
 // Expressions in the canonical order (symbolic/canonical_text.hpp), not GiNaC's, which changes
 // from run to run: what is made from them in turn (symbols, reductions, ties) is then the same.
@@ -103,7 +106,30 @@ std::size_t expression_size(const Expr& e) {
   return size;
 }
 
+Expr remembered(const Expr& e, Expr (*f)(const Expr&)) {
+  // equal expressions by GiNaC's hash and equality, one table per function; dropped when they
+  // grow past a bound
+  constexpr std::size_t kKept = 20000;
+  struct Hash {
+    std::size_t operator()(const Expr& x) const { return x.gethash(); }
+  };
+  using Table = std::unordered_map<Expr, Expr, Hash, GiNaC::ex_is_equal>;
+  thread_local std::map<Expr (*)(const Expr&), Table> tables;
+  Table& table = tables[f];
+  if (const auto found = table.find(e); found != table.end()) return found->second;
+  const Expr result = f(e);
+  if (table.size() >= kKept) table.clear();
+  table.emplace(e, result);
+  return result;
+}
+
 Expr simplify(const Expr& e) {
+  return remembered(e, simplify_uncached);
+}
+
+namespace {
+
+Expr simplify_uncached(const Expr& e) {
   SimplifyInside inside;
   check_expansion_budget(e, "simplifying");
   Expr best = expand_within_budget(inside(e), "simplifying");
@@ -132,10 +158,27 @@ Expr simplify(const Expr& e) {
   const Expr numerator = expand_within_budget(fraction.op(0), "simplifying"),
              denominator = expand_within_budget(fraction.op(1), "simplifying");
   const std::size_t n = arguments.size();
-  const std::size_t combinations = n <= 4 ? (std::size_t{1} << n) : 2;
+  // the arguments whose sine or cosine is squared somewhere: only these are reduced (for the
+  // others either way leaves the polynomials as they are), so a choice that differs from an
+  // earlier one only in the others gives what that one gave and is skipped
+  const auto squared = [](const Expr& p, const GiNaC::symbol& v) {
+    return p.is_polynomial(v) && p.degree(v) >= 2;
+  };
+  std::vector<bool> reduced_argument(n);
+  std::size_t idle = 0;  // the mask of the others (up to four arguments: a bit each)
+  bool any = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    reduced_argument[i] = squared(numerator, s[i]) || squared(numerator, c[i]) ||
+                          squared(denominator, s[i]) || squared(denominator, c[i]);
+    any = any || reduced_argument[i];
+    if (!reduced_argument[i] && n <= 4) idle |= std::size_t{1} << i;
+  }
+  const std::size_t combinations = n <= 4 ? (std::size_t{1} << n) : (any ? 2 : 1);
   for (std::size_t mask = 0; mask < combinations; ++mask) {
+    if ((mask & idle) != 0) continue;
     Expr num = numerator, den = denominator;
     for (std::size_t i = 0; i < n; ++i) {
+      if (!reduced_argument[i]) continue;
       const bool in_sine = n <= 4 ? ((mask >> i) & 1) != 0 : mask == 1;
       const GiNaC::symbol& v = in_sine ? s[i] : c[i];
       const GiNaC::symbol& w = in_sine ? c[i] : s[i];
@@ -149,6 +192,8 @@ Expr simplify(const Expr& e) {
   }
   return best.subs(radicals);
 }
+
+}  // namespace
 
 Expr collect_in(const Expr& e, const std::vector<Expr>& symbols) {
   GiNaC::lst list;

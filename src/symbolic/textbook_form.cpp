@@ -42,7 +42,19 @@ Expr tidy(const Expr& e) {
 
 }  // namespace
 
+namespace {
+
+Expr textbook_simplify_uncached(const Expr& e);
+
+}  // namespace
+
 Expr textbook_simplify(const Expr& e) {
+  return remembered(e, textbook_simplify_uncached);
+}
+
+namespace {
+
+Expr textbook_simplify_uncached(const Expr& e) {
   const Expr simple = simplify(e);
   // the forms tried, and whether homogenised
   std::vector<std::pair<Expr, bool>> forms{{simple, false}};
@@ -79,6 +91,8 @@ Expr textbook_simplify(const Expr& e) {
   }
   return best.form;
 }
+
+}  // namespace
 
 std::vector<GroupedTerm> group_by_monomials(const Expr& e, const std::vector<Expr>& symbols) {
   const Expr x = expand_within_budget(e, "grouping");

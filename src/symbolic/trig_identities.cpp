@@ -156,9 +156,58 @@ Expr combine_angle_sums(const Expr& e) {
   }
 }
 
+namespace {
+
+// The degree of a term of an expanded sum in sin x and cos x together, or none where they sit
+// inside something else (a root, another function).
+std::optional<int> trig_degree(const Expr& term, const Expr& sine_x, const Expr& cosine_x) {
+  const auto factor_degree = [&](const Expr& f) -> std::optional<int> {
+    const auto is_trig_of_x = [&](const Expr& g) {
+      return g.is_equal(sine_x) || g.is_equal(cosine_x);
+    };
+    if (is_trig_of_x(f)) return 1;
+    if (is_exactly_a<GiNaC::power>(f) && is_trig_of_x(f.op(0)) &&
+        f.op(1).info(GiNaC::info_flags::nonnegint)) {
+      return GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_int();
+    }
+    if (GiNaC::is_a<GiNaC::symbol>(f) || GiNaC::is_a<GiNaC::numeric>(f)) return 0;
+    if (f.has(sine_x) || f.has(cosine_x)) return std::nullopt;
+    return 0;
+  };
+  if (!is_exactly_a<GiNaC::mul>(term)) return factor_degree(term);
+  int d = 0;
+  for (std::size_t i = 0; i < term.nops(); ++i) {
+    const auto k = factor_degree(term.op(i));
+    if (!k) return std::nullopt;
+    d += *k;
+  }
+  return d;
+}
+
+// Whether homogenising the expanded x in the sine and cosine of `argument` may change it: a term
+// below the top degree of its parity, or a term it cannot tell.
+bool homogenizable(const Expr& x, const Expr& argument) {
+  const Expr sine_x = GiNaC::sin(argument), cosine_x = GiNaC::cos(argument);
+  int top[2] = {-1, -1};
+  std::vector<int> degrees;
+  for (const Expr& t : terms_of(x)) {
+    const auto d = trig_degree(t, sine_x, cosine_x);
+    if (!d) return true;
+    degrees.push_back(*d);
+    top[*d % 2] = std::max(top[*d % 2], *d);
+  }
+  for (const int d : degrees) {
+    if (d < top[d % 2]) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 Expr homogenize_trig(const Expr& e) {
   Expr x = expand_within_budget(e, "simplifying");
   for (const Expr& argument : trig_arguments(x)) {
+    if (!homogenizable(x, argument)) continue;
     const GiNaC::symbol s, c;
     const Expr y = expand_within_budget(
         x.subs(GiNaC::exmap{{GiNaC::sin(argument), s}, {GiNaC::cos(argument), c}}), "simplifying");

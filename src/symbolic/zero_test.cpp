@@ -277,16 +277,29 @@ std::optional<bool> vanishes_identically(const Expr& e, int points) {
     }
     arguments.emplace(f.op(0), *a);
   }
-  // each symbol of an angle in one angle only, and nowhere outside the trigonometric functions
-  std::set<Expr, GiNaC::ex_is_less> angle_symbols;
+  // each angle with a symbol of its own: in it to the first power, in no other angle and nowhere
+  // outside the trigonometric functions (t of Ω t, Ω being anywhere): the angle's value then fixes
+  // that symbol's alone, and the others keep values of their own
+  std::map<Expr, int, GiNaC::ex_is_less> in_angles;
+  std::vector<std::set<Expr, GiNaC::ex_is_less>> angle_parts;
   for (const auto& [u, L] : units) {
-    std::set<Expr, GiNaC::ex_is_less> own;
-    collect_symbols(u, own);
-    for (const Expr& s : own) {
-      if (!angle_symbols.insert(s).second || parts.outside_symbols.count(s) > 0) {
-        return std::nullopt;
+    angle_parts.emplace_back();
+    collect_symbols(u, angle_parts.back());
+    for (const Expr& x : angle_parts.back()) ++in_angles[x];
+  }
+  std::set<Expr, GiNaC::ex_is_less> angle_symbols;
+  std::size_t k = 0;
+  for (const auto& [u, L] : units) {
+    bool found = false;
+    for (const Expr& x : angle_parts[k]) {
+      if (in_angles[x] == 1 && parts.outside_symbols.count(x) == 0 && u.degree(x) == 1) {
+        angle_symbols.insert(x);
+        found = true;
+        break;
       }
     }
+    if (!found) return std::nullopt;
+    ++k;
   }
   std::set<Expr, CanonicalLess> others;  // the symbols given values of their own, in a fixed order
   for (const Expr& s : parts.symbols) {

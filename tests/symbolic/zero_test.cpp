@@ -26,6 +26,9 @@ TEST(ZeroTest, IdentitiesOfSinesAndCosinesAreZero) {
       // half angles, a product Ω t as one angle, a quarter turn, tangents
       sin(a) - 2 * sin(a / 2) * cos(a / 2),
       sin(w * t + a) - sin(w * t) * cos(a) - cos(w * t) * sin(a),
+      // Ω t an angle while Ω is also a factor (the rotating hoop's T): t is the angle's own
+      w * w * (pow(sin(w * t), 2) + pow(cos(w * t), 2)) - w * w,
+      t * (pow(sin(w * t), 2) + pow(cos(w * t), 2)) - t,  // ... or w the angle's own
       sin(a + GiNaC::Pi / 2) - cos(a),
       cos(a - 3 * GiNaC::Pi) + cos(a),
       tan(a) * cos(a) - sin(a),
@@ -59,6 +62,8 @@ TEST(ZeroTest, WhatCannotBeEvaluatedExactlyIsUndecided) {
       // a radical, an angle that is also a polynomial variable, a constant angle, another function
       GiNaC::sqrt(pow(m + L, 2)) - GiNaC::sqrt(m * m + 2 * m * L + L * L),
       a * (pow(sin(a), 2) + pow(cos(a), 2)) - a,
+      // Ω t an angle and a factor: neither symbol is the angle's own
+      w * t * (pow(sin(w * t), 2) + pow(cos(w * t), 2)) - w * t,
       sin(a + 1) - sin(a) * cos(Expr(1)) - cos(a) * sin(Expr(1)),
       GiNaC::exp(a) * GiNaC::exp(b) - GiNaC::exp(a + b),
   };

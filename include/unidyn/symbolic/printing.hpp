@@ -17,6 +17,10 @@ std::size_t expression_size(const Expr& e);
 // canonical order, so the result is the same expression in every run.
 Expr simplify(const Expr& e);
 
+// f(e), computed once for equal expressions (in this thread; up to a bound of kept results): for
+// the simplifications, which meet the same coefficient again and again.
+Expr remembered(const Expr& e, Expr (*f)(const Expr&));
+
 // Collects an expression in the given symbols (e.g. the accelerations) after simplifying.
 Expr collect_in(const Expr& e, const std::vector<Expr>& symbols);
 

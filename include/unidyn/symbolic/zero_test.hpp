@@ -1,7 +1,8 @@
 // Whether an expression is identically zero, by exact evaluation at random rational points.
 //
 // Each trigonometric argument is an integer combination Σ n_k u_k of angles u_k (a coordinate, or
-// a product such as Ω t) whose symbols appear nowhere else; each u_k is given a random rational
+// a product such as Ω t) that each have a symbol of their own, appearing nowhere else (t of Ω t;
+// Ω may appear anywhere and gets a value of its own); each u_k is given a random rational
 // point of the unit circle, sin u = 2τ/(1 + τ²), cos u = (1 − τ²)/(1 + τ²) with τ rational, and
 // sin, cos of Σ n_k u_k follow exactly from the angle-sum and multiple-angle formulas. Every other
 // symbol (rates, accelerations, parameters, coordinates outside trigonometric functions) gets a

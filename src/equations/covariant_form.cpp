@@ -1,0 +1,73 @@
+// The covariant form of Lagrange's equations: convective terms by Christoffel symbols.
+#include "unidyn/equations/covariant_form.hpp"
+
+#include "unidyn/symbolic/zero_test.hpp"
+
+namespace unidyn {
+namespace {
+
+// T's parts linear in the rates and free of them: b_R = ∂T/∂q̇^R and T0 at q̇ = 0.
+struct RateFreeParts {
+  std::vector<Expr> b;
+  Expr T0;
+};
+
+RateFreeParts rate_free_parts(const System& system, const Expr& T) {
+  GiNaC::exmap at_rest;
+  for (const auto& c : system.coordinates()) at_rest[c.rate] = 0;
+  RateFreeParts parts;
+  for (const auto& c : system.coordinates()) parts.b.push_back(T.diff(c.rate).subs(at_rest));
+  parts.T0 = T.subs(at_rest);
+  return parts;
+}
+
+}  // namespace
+
+std::vector<std::optional<Expr>> covariant_convective_terms(const System& system,
+                                                            const EquationsOfMotion& eq,
+                                                            const ExprMatrix& M) {
+  const auto& q = system.coordinates();
+  const std::size_t n = q.size();
+  const GiNaC::symbol& t = system.time();
+  const RateFreeParts parts = rate_free_parts(system, eq.kinetic_energy);
+  std::vector<std::optional<Expr>> rows;
+  for (std::size_t R = 0; R < n; ++R) {
+    Expr c = 0;
+    for (std::size_t K = 0; K < n; ++K) {
+      // (4.25): the Christoffel symbols of the first kind, [KS, R] + [SK, R] for K < S
+      const Expr diagonal = M(R, K).diff(q[K].value) - M(K, K).diff(q[R].value) / 2;  // [KK, R]
+      c += diagonal * q[K].rate * q[K].rate;
+      for (std::size_t S = K + 1; S < n; ++S) {
+        const Expr symbol =
+            M(R, K).diff(q[S].value) + M(R, S).diff(q[K].value) - M(K, S).diff(q[R].value);
+        c += symbol * q[K].rate * q[S].rate;
+      }
+      // the rheonomic and gyroscopic terms, linear in the rates
+      const Expr g = M(R, K).diff(t) + parts.b[R].diff(q[K].value) - parts.b[K].diff(q[R].value);
+      c += g * q[K].rate;
+    }
+    c += parts.b[R].diff(t) - parts.T0.diff(q[R].value);
+    // the derived row's convective part: f_R = Φ_R − ∂U/∂q^R − c_R
+    const Expr derived =
+        eq.generalized_force[R] - eq.potential_energy.diff(q[R].value) - eq.forcing[R];
+    rows.push_back(vanishes_identically(derived - c) == std::optional<bool>(true)
+                       ? std::optional<Expr>(c)
+                       : std::nullopt);
+  }
+  return rows;
+}
+
+std::optional<Expr> quadratic_kinetic_energy(const System& system, const EquationsOfMotion& eq,
+                                             const ExprMatrix& M) {
+  const auto& q = system.coordinates();
+  const RateFreeParts parts = rate_free_parts(system, eq.kinetic_energy);
+  Expr T = parts.T0;
+  for (std::size_t K = 0; K < q.size(); ++K) {
+    T += M(K, K) * q[K].rate * q[K].rate / 2 + parts.b[K] * q[K].rate;
+    for (std::size_t S = K + 1; S < q.size(); ++S) T += M(K, S) * q[K].rate * q[S].rate;
+  }
+  if (vanishes_identically(eq.kinetic_energy - T) != std::optional<bool>(true)) return std::nullopt;
+  return T;
+}
+
+}  // namespace unidyn
