@@ -201,9 +201,9 @@ class Bench:
             self.say(f"| {model} | " + " | ".join(cells) + f" | {worst:.1e} |")
         self.say()
 
-    # 6. Micro benchmarks -------------------------------------------------------------------------
+    # 7. Micro benchmarks -------------------------------------------------------------------------
     def micro(self):
-        self.say("## 6. Micro benchmarks (Google Benchmark)\n")
+        self.say("## 7. Micro benchmarks (Google Benchmark)\n")
         self.say("```")
         for name in ("bench_tape", "bench_rotation", "bench_integrate"):
             program = os.path.join(self.build, "bench", name)
