@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "support/model_run.hpp"
+#include "unidyn/kinematics/integrability.hpp"
 
 namespace unidyn {
 namespace {
@@ -132,6 +133,25 @@ TEST(Bicycle, RightsItselfAtFourPointSixMetresPerSecond) {
     if (t > 4) late = std::max(late, phi);    // and in the last
   }
   EXPECT_LT(late, 0.3 * early);
+}
+
+// Each rolling constraint is non-integrable by (1.21); the four together are past the size the
+// Frobenius test (8.18) is run at, and say so rather than take minutes.
+TEST(Bicycle, RollingConstraintsNonIntegrableTheSetNotTested) {
+  const System system = load_model(test::model_path("bicycle"));
+  std::vector<std::size_t> velocity;
+  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+    if (system.constraints[k].kind != Constraint::Kind::velocity) continue;
+    velocity.push_back(k);
+    EXPECT_FALSE(constraint_integrability(system, k).integrable) << system.constraints[k].name;
+  }
+  ASSERT_EQ(velocity.size(), 4u);
+  try {
+    set_integrability(system, velocity);
+    FAIL() << "the set was tested";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_TRUE(std::string(e.what()).starts_with("not tested")) << e.what();
+  }
 }
 
 }  // namespace

@@ -27,7 +27,9 @@ struct Integrability {
 // (1.21) for constraint k of the system.
 Integrability constraint_integrability(const System& system, std::size_t k);
 
-// (8.18) for the constraints ks taken together (they must be independent).
+// (8.18) for the constraints ks taken together (they must be independent: else, or when their
+// rows hold more than kLargestSetIntegrabilityTest nodes, std::invalid_argument says why not).
+inline constexpr std::size_t kLargestSetIntegrabilityTest = 1500;
 Integrability set_integrability(const System& system, const std::vector<std::size_t>& ks);
 
 }  // namespace unidyn
