@@ -27,18 +27,34 @@ bool better(const Expr& candidate, const Expr& best) {
   return a < b || (a == b && canonical_less(candidate, best));
 }
 
-// An expanded p, polynomial in v, with every v^k (k ≥ 2) replaced by v^(k−2) (1 − w²): its
-// remainder modulo v² + w² − 1, unique for each polynomial (the ideal is monic in v).
-Expr reduce_modulo_unit_circle(const Expr& p, const GiNaC::symbol& v, const GiNaC::symbol& w) {
-  if (!p.is_polynomial(v)) return p;
-  Expr result = p;
-  for (int k = p.degree(v); k >= 2; --k) {
-    const Expr a = result.coeff(v, k);
-    result = expand_within_budget(
-        result - a * GiNaC::pow(v, k) + a * GiNaC::pow(v, k - 2) * (1 - GiNaC::pow(w, 2)),
-        "simplifying");
+// Pairs (v, w) of the sine and cosine symbols of one argument, v the one reduced.
+using UnitCircles = std::vector<std::pair<GiNaC::symbol, GiNaC::symbol>>;
+
+// An expanded p with every v^k (k ≥ 2) of each pair (v, w) replaced by v^(k mod 2) (1 − w²)^⌊k/2⌋:
+// its remainder modulo the v² + w² − 1, unique for each polynomial (each is monic in its v). A
+// pair in whose v p is not a polynomial is left as it is.
+Expr reduce_modulo_unit_circles(const Expr& p, const UnitCircles& pairs) {
+  UnitCircles reduced;
+  for (const auto& pair : pairs) {
+    if (p.is_polynomial(pair.first) && p.degree(pair.first) >= 2) reduced.push_back(pair);
   }
-  return result;
+  if (reduced.empty()) return p;
+  const auto reduce_term = [&reduced](const Expr& term) {
+    Expr result = term;
+    for (const auto& [v, w] : reduced) {
+      const int k = term.degree(v);
+      if (k < 2) continue;
+      result = result / GiNaC::pow(v, k - k % 2) * GiNaC::pow(1 - GiNaC::pow(w, 2), k / 2);
+    }
+    return result;
+  };
+  Expr sum = 0;
+  if (GiNaC::is_exactly_a<GiNaC::add>(p)) {
+    for (std::size_t i = 0; i < p.nops(); ++i) sum += reduce_term(p.op(i));
+  } else {
+    sum = reduce_term(p);
+  }
+  return expand_within_budget(sum, "simplifying");
 }
 
 // A fixed remainder of p modulo s² + c² − 1 for every trigonometric argument (the sines' squares
@@ -55,7 +71,7 @@ Expr canonical_trig_form(const Expr& p) {
     back[sc.back().second] = GiNaC::cos(x);
   }
   Expr reduced = expand_within_budget(p.subs(to_symbols), "simplifying");
-  for (const auto& [sine, cosine] : sc) reduced = reduce_modulo_unit_circle(reduced, sine, cosine);
+  reduced = reduce_modulo_unit_circles(reduced, sc);
   return expand_within_budget(reduced.subs(back), "simplifying");
 }
 
@@ -176,15 +192,14 @@ Expr simplify_uncached(const Expr& e) {
   const std::size_t combinations = n <= 4 ? (std::size_t{1} << n) : (any ? 2 : 1);
   for (std::size_t mask = 0; mask < combinations; ++mask) {
     if ((mask & idle) != 0) continue;
-    Expr num = numerator, den = denominator;
+    UnitCircles pairs;
     for (std::size_t i = 0; i < n; ++i) {
       if (!reduced_argument[i]) continue;
       const bool in_sine = n <= 4 ? ((mask >> i) & 1) != 0 : mask == 1;
-      const GiNaC::symbol& v = in_sine ? s[i] : c[i];
-      const GiNaC::symbol& w = in_sine ? c[i] : s[i];
-      num = reduce_modulo_unit_circle(num, v, w);
-      den = reduce_modulo_unit_circle(den, v, w);
+      pairs.emplace_back(in_sine ? s[i] : c[i], in_sine ? c[i] : s[i]);
     }
+    const Expr num = reduce_modulo_unit_circles(numerator, pairs),
+               den = reduce_modulo_unit_circles(denominator, pairs);
     const Expr reduced = canonical_normal(num / den).subs(back);
     for (const Expr& candidate : {reduced, expand_within_budget(reduced, "simplifying")}) {
       if (better(candidate, best)) best = candidate;

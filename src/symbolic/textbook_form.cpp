@@ -19,14 +19,7 @@ using GiNaC::is_exactly_a;
 // Collected in the sines and cosines (Σ c_k × their monomial k), each c_k and then the whole with
 // its common factor out.
 Expr tidy(const Expr& e) {
-  GiNaC::lst trig;
-  for (const Expr& x : trig_arguments(e)) {
-    trig.append(GiNaC::sin(x));
-    trig.append(GiNaC::cos(x));
-  }
-  // (not where a sine sits under a root: GiNaC has no degree there)
-  const Expr collected =
-      trig.nops() > 0 && e.is_polynomial(trig) ? GiNaC::collect(e, trig, true) : e;
+  const Expr collected = collect_in_sines_and_cosines(e).value_or(e);
   // each factor of each term with its common factor out
   const auto tidy_term = [](const Expr& term) {
     if (!is_exactly_a<GiNaC::mul>(term)) return pull_common_factor(term);

@@ -1,6 +1,7 @@
 // Angle sums and homogenisation in sines and cosines.
 #include "unidyn/symbolic/trig_identities.hpp"
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <set>
@@ -128,7 +129,59 @@ std::vector<Expr> terms_of(const Expr& e) {
   return terms;
 }
 
+// Whether e holds a sine or a cosine anywhere.
+bool has_sine_or_cosine(const Expr& e) {
+  if (is_sine(e) || is_cosine(e)) return true;
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    if (has_sine_or_cosine(e.op(i))) return true;
+  }
+  return false;
+}
+
+// A term as its product of sines and cosines to natural powers and the rest, or none where a
+// sine or cosine sits elsewhere in it.
+std::optional<std::pair<Expr, Expr>> split_trig_monomial(const Expr& term) {
+  Expr monomial = 1, rest = 1;
+  const auto take = [&](const Expr& f) {
+    const bool power = is_exactly_a<GiNaC::power>(f);
+    const Expr& base = power ? f.op(0) : f;
+    if (is_sine(base) || is_cosine(base)) {
+      if (power && !f.op(1).info(GiNaC::info_flags::nonnegint)) return false;
+      if (has_sine_or_cosine(base.op(0))) return false;
+      monomial *= f;
+      return true;
+    }
+    if (has_sine_or_cosine(f)) return false;
+    rest *= f;
+    return true;
+  };
+  if (is_exactly_a<GiNaC::mul>(term)) {
+    for (std::size_t i = 0; i < term.nops(); ++i) {
+      if (!take(term.op(i))) return std::nullopt;
+    }
+  } else if (!take(term)) {
+    return std::nullopt;
+  }
+  return std::make_pair(monomial, rest);
+}
+
 }  // namespace
+
+std::optional<Expr> collect_in_sines_and_cosines(const Expr& e) {
+  if (!has_sine_or_cosine(e)) return std::nullopt;
+  const Expr x = expand_within_budget(e, "simplifying");
+  // the coefficients of each monomial, by its canonical text
+  std::map<std::string, std::pair<Expr, Expr>> groups;
+  for (const Expr& term : terms_of(x)) {
+    const auto split = split_trig_monomial(term);
+    if (!split) return std::nullopt;
+    auto& group = groups.try_emplace(canonical_text(split->first), split->first, 0).first->second;
+    group.second += split->second;
+  }
+  Expr sum = 0;
+  for (const auto& [text, group] : groups) sum += group.first * group.second;
+  return sum;
+}
 
 std::vector<Expr> trig_arguments(const Expr& e) {
   GiNaC::exset found;
@@ -143,7 +196,9 @@ std::vector<Expr> trig_arguments(const Expr& e) {
 Expr combine_angle_sums(const Expr& e) {
   Expr x = expand_within_budget(e, "simplifying");
   for (;;) {
+    // the terms in the canonical order, so that the pair taken never depends on GiNaC's
     std::vector<Expr> terms = terms_of(x);
+    std::sort(terms.begin(), terms.end(), canonical_less);
     if (terms.size() < 2 || terms.size() > kMaxCombinedTerms) return x;
     const auto pair = first_pair(readings_of(terms));
     if (!pair) return x;

@@ -11,6 +11,7 @@
 // A sin²θ + C cos²θ, the form the heavy top's mass matrix has in the book (9.22).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "unidyn/symbolic/expression.hpp"
@@ -19,6 +20,11 @@ namespace unidyn {
 
 // Every distinct x appearing as sin(x) or cos(x) in e, in the canonical order.
 std::vector<Expr> trig_arguments(const Expr& e);
+
+// e expanded and collected in its sines and cosines: Σ c_k m_k with m_k the distinct products of
+// their powers; none where e has no sine or cosine or one sits other than as a factor to a
+// natural power (under a root, in a denominator, inside another function).
+std::optional<Expr> collect_in_sines_and_cosines(const Expr& e);
 
 // The expanded sum with the angle-sum identities applied while a pair of terms matches (pairs
 // chosen in the canonical order). Sums of more than 400 terms are left expanded.
