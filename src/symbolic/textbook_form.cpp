@@ -2,6 +2,8 @@
 #include "unidyn/symbolic/textbook_form.hpp"
 
 #include <algorithm>
+#include <array>
+#include <deque>
 #include <map>
 #include <numeric>
 
@@ -53,9 +55,12 @@ Expr textbook_simplify_uncached(const Expr& e) {
   std::vector<std::pair<Expr, bool>> forms{{simple, false}};
   if (!trig_arguments(simple).empty()) {
     const Expr combined = combine_angle_sums(simple);
+    const Expr homogenised = homogenize_trig(simple);
     forms.push_back({combined, false});
-    forms.push_back({homogenize_trig(simple), true});
-    forms.push_back({homogenize_trig(combined), true});
+    forms.push_back({homogenised, true});
+    // (homogenising expands first: where combining changed nothing but the expansion, the same)
+    const bool changed = !combined.is_equal(expand_within_budget(simple, "simplifying"));
+    forms.push_back({changed ? homogenize_trig(combined) : homogenised, true});
   }
   // the shortest print, overall and among the homogenised forms (ties: the canonical order)
   struct Best {
@@ -70,11 +75,26 @@ Expr textbook_simplify_uncached(const Expr& e) {
       }
     }
   } best, homogeneous;
+  // each distinct form and its tidy form, with their prints
+  struct Printed {
+    Expr form;
+    std::string text;
+  };
+  std::deque<std::pair<Expr, std::array<Printed, 2>>> seen;
+  const auto candidates = [&seen](const Expr& form) -> const std::array<Printed, 2>& {
+    for (const auto& [earlier, printed] : seen) {
+      if (earlier.is_equal(form)) return printed;
+    }
+    const Expr tidied = tidy(form);
+    return seen
+        .emplace_back(form, std::array<Printed, 2>{Printed{form, canonical_text(form)},
+                                                   Printed{tidied, canonical_text(tidied)}})
+        .second;
+  };
   for (const auto& [form, homogenised] : forms) {
-    for (const Expr& candidate : {form, tidy(form)}) {
-      const std::string text = canonical_text(candidate);
-      best.offer(candidate, text);
-      if (homogenised) homogeneous.offer(candidate, text);
+    for (const Printed& candidate : candidates(form)) {
+      best.offer(candidate.form, candidate.text);
+      if (homogenised) homogeneous.offer(candidate.form, candidate.text);
     }
   }
   // A sin²θ + C cos²θ reads as the book's, C + (A − C) sin²θ does not: a homogeneous form is
