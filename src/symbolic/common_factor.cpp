@@ -77,9 +77,9 @@ Expr pull_common_factor(const Expr& e) {
   Expr factor = rational ? Expr(numerators / denominators) : Expr(1);
   for (const auto& [text, power] : common) factor *= GiNaC::pow(power.first, power.second);
   if (factor.is_equal(1)) return e;
-  Expr inner = 0;
-  for (std::size_t i = 0; i < e.nops(); ++i) inner += e.op(i) / factor;
-  return factor * inner;
+  std::vector<Expr> inner;
+  for (std::size_t i = 0; i < e.nops(); ++i) inner.push_back(e.op(i) / factor);
+  return factor * sum_of(inner);
 }
 
 }  // namespace unidyn

@@ -71,4 +71,8 @@ ModelError::ModelError(SourcePosition where, const std::string& message)
       where_(std::move(where)),
       message_(message) {}
 
+Expr sum_of(const std::vector<Expr>& terms) {
+  return GiNaC::dynallocate<GiNaC::add>(terms);
+}
+
 }  // namespace unidyn

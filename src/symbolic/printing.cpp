@@ -48,13 +48,13 @@ Expr reduce_modulo_unit_circles(const Expr& p, const UnitCircles& pairs) {
     }
     return result;
   };
-  Expr sum = 0;
+  std::vector<Expr> terms;
   if (GiNaC::is_exactly_a<GiNaC::add>(p)) {
-    for (std::size_t i = 0; i < p.nops(); ++i) sum += reduce_term(p.op(i));
+    for (std::size_t i = 0; i < p.nops(); ++i) terms.push_back(reduce_term(p.op(i)));
   } else {
-    sum = reduce_term(p);
+    terms.push_back(reduce_term(p));
   }
-  return expand_within_budget(sum, "simplifying");
+  return expand_within_budget(sum_of(terms), "simplifying");
 }
 
 // A fixed remainder of p modulo s² + c² − 1 for every trigonometric argument (the sines' squares

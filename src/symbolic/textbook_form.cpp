@@ -30,9 +30,9 @@ Expr tidy(const Expr& e) {
     return product;
   };
   if (!is_exactly_a<GiNaC::add>(collected)) return tidy_term(collected);
-  Expr sum = 0;
-  for (std::size_t i = 0; i < collected.nops(); ++i) sum += tidy_term(collected.op(i));
-  return pull_common_factor(sum);
+  std::vector<Expr> sum;
+  for (std::size_t i = 0; i < collected.nops(); ++i) sum.push_back(tidy_term(collected.op(i)));
+  return pull_common_factor(sum_of(sum));
 }
 
 }  // namespace
@@ -109,7 +109,7 @@ Expr textbook_simplify_uncached(const Expr& e) {
 
 std::vector<GroupedTerm> group_by_monomials(const Expr& e, const std::vector<Expr>& symbols) {
   const Expr x = expand_within_budget(e, "grouping");
-  std::map<std::vector<int>, Expr> groups;
+  std::map<std::vector<int>, std::vector<Expr>> groups;
   const auto add_term = [&](const Expr& term) {
     std::vector<int> exponents;
     Expr monomial = 1;
@@ -118,14 +118,15 @@ std::vector<GroupedTerm> group_by_monomials(const Expr& e, const std::vector<Exp
       exponents.push_back(d);
       monomial *= GiNaC::pow(s, d);
     }
-    groups[exponents] += term / monomial;
+    groups[exponents].push_back(term / monomial);
   };
   if (is_exactly_a<GiNaC::add>(x)) {
     for (std::size_t i = 0; i < x.nops(); ++i) add_term(x.op(i));
   } else if (!x.is_zero()) {
     add_term(x);
   }
-  std::vector<std::pair<std::vector<int>, Expr>> ordered(groups.begin(), groups.end());
+  std::vector<std::pair<std::vector<int>, Expr>> ordered;
+  for (const auto& [exponents, terms] : groups) ordered.emplace_back(exponents, sum_of(terms));
   std::sort(ordered.begin(), ordered.end(), [](const auto& a, const auto& b) {
     const int da = std::accumulate(a.first.begin(), a.first.end(), 0);
     const int db = std::accumulate(b.first.begin(), b.first.end(), 0);

@@ -171,16 +171,18 @@ std::optional<Expr> collect_in_sines_and_cosines(const Expr& e) {
   if (!has_sine_or_cosine(e)) return std::nullopt;
   const Expr x = expand_within_budget(e, "simplifying");
   // the coefficients of each monomial, by its canonical text
-  std::map<std::string, std::pair<Expr, Expr>> groups;
+  std::map<std::string, std::pair<Expr, std::vector<Expr>>> groups;
   for (const Expr& term : terms_of(x)) {
     const auto split = split_trig_monomial(term);
     if (!split) return std::nullopt;
-    auto& group = groups.try_emplace(canonical_text(split->first), split->first, 0).first->second;
-    group.second += split->second;
+    auto& group =
+        groups.try_emplace(canonical_text(split->first), split->first, std::vector<Expr>{})
+            .first->second;
+    group.second.push_back(split->second);
   }
-  Expr sum = 0;
-  for (const auto& [text, group] : groups) sum += group.first * group.second;
-  return sum;
+  std::vector<Expr> sum;
+  for (const auto& [text, group] : groups) sum.push_back(group.first * sum_of(group.second));
+  return sum_of(sum);
 }
 
 std::vector<Expr> trig_arguments(const Expr& e) {
@@ -197,17 +199,21 @@ Expr combine_angle_sums(const Expr& e) {
   Expr x = expand_within_budget(e, "simplifying");
   for (;;) {
     // the terms in the canonical order, so that the pair taken never depends on GiNaC's
-    std::vector<Expr> terms = terms_of(x);
-    std::sort(terms.begin(), terms.end(), canonical_less);
+    std::vector<std::pair<std::string, Expr>> keyed;
+    for (const Expr& t : terms_of(x)) keyed.emplace_back(canonical_text(t), t);
+    std::stable_sort(keyed.begin(), keyed.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<Expr> terms;
+    for (const auto& [text, t] : keyed) terms.push_back(t);
     if (terms.size() < 2 || terms.size() > kMaxCombinedTerms) return x;
     const auto pair = first_pair(readings_of(terms));
     if (!pair) return x;
     const auto& [first, second, term] = *pair;
-    Expr sum = term;
+    std::vector<Expr> sum{term};
     for (std::size_t t = 0; t < terms.size(); ++t) {
-      if (t != first && t != second) sum += terms[t];
+      if (t != first && t != second) sum.push_back(terms[t]);
     }
-    x = sum;
+    x = sum_of(sum);
   }
 }
 
@@ -274,15 +280,15 @@ Expr homogenize_trig(const Expr& e) {
       const int d = t.degree(s) + t.degree(c);
       top[d % 2] = std::max(top[d % 2], d);
     }
-    Expr raised = 0;
+    std::vector<Expr> raised;
     bool below = false;
     for (const Expr& t : terms) {
       const int d = t.degree(s) + t.degree(c);
       below = below || d < top[d % 2];
-      raised += t * GiNaC::pow(GiNaC::pow(s, 2) + GiNaC::pow(c, 2), (top[d % 2] - d) / 2);
+      raised.push_back(t * GiNaC::pow(GiNaC::pow(s, 2) + GiNaC::pow(c, 2), (top[d % 2] - d) / 2));
     }
     if (!below) continue;
-    x = expand_within_budget(raised, "simplifying")
+    x = expand_within_budget(sum_of(raised), "simplifying")
             .subs(GiNaC::exmap{{s, GiNaC::sin(argument)}, {c, GiNaC::cos(argument)}});
   }
   return x;

@@ -54,6 +54,9 @@ VectorExpr subs(const VectorExpr& a, const GiNaC::exmap& map);
 // Fixed basis vector E_i, i = 1, 2, 3.
 VectorExpr basis_vector_expr(int i);
 
+// The sum of the terms made at once (adding them one by one copies the growing sum each time).
+Expr sum_of(const std::vector<Expr>& terms);
+
 // Where something is in a model file: "file:line:column" (1-based; 0 means unknown).
 struct SourcePosition {
   std::string file;
