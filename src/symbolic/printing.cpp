@@ -5,6 +5,7 @@
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/trig_identities.hpp"
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -154,7 +155,8 @@ Expr simplify_uncached(const Expr& e) {
   // sin²x + cos²x = 1: with s = sin x, c = cos x for each argument, numerator and denominator are
   // polynomials in the s and c; reduced modulo s² + c² − 1 in s or in c they take a unique form,
   // so an expression that is zero becomes 0 whatever order GiNaC keeps its terms in. Each argument
-  // is reduced both ways (every combination for up to four arguments) and the smallest kept.
+  // is reduced both ways (every combination for up to two arguments reduced, one argument at a
+  // time for three or four, all one way or all the other beyond) and the smallest kept.
   GiNaC::exmap radicals;
   best = hide_radicals(best, radicals);
   const std::vector<Expr> arguments = trig_arguments(best);
@@ -191,9 +193,10 @@ Expr simplify_uncached(const Expr& e) {
   }
   // a polynomial in which no sine or cosine is squared is its own remainder
   if (!any && denominator.is_equal(1)) return best.subs(radicals);
-  const std::size_t combinations = n <= 4 ? (std::size_t{1} << n) : (any ? 2 : 1);
-  for (std::size_t mask = 0; mask < combinations; ++mask) {
-    if ((mask & idle) != 0) continue;
+  // the reduction by one choice of sine or cosine per argument (bit i set: argument i in its
+  // sine, up to four arguments; beyond, all in the sine or all in the cosine): its best form,
+  // offered to `best`
+  const auto reduction = [&](std::size_t mask) {
     UnitCircles pairs;
     for (std::size_t i = 0; i < n; ++i) {
       if (!reduced_argument[i]) continue;
@@ -203,8 +206,33 @@ Expr simplify_uncached(const Expr& e) {
     const Expr num = reduce_modulo_unit_circles(numerator, pairs),
                den = reduce_modulo_unit_circles(denominator, pairs);
     const Expr reduced = canonical_normal(num / den).subs(back);
-    for (const Expr& candidate : {reduced, expand_within_budget(reduced, "simplifying")}) {
-      if (better(candidate, best)) best = candidate;
+    const Expr expanded = expand_within_budget(reduced, "simplifying");
+    const Expr form = better(expanded, reduced) ? expanded : reduced;
+    if (better(form, best)) best = form;
+    return form;
+  };
+  const std::size_t reduced_count =
+      std::count(reduced_argument.begin(), reduced_argument.end(), true);
+  if (n > 4) {
+    reduction(0);
+    if (any) reduction(1);
+  } else if (reduced_count <= 2) {
+    // every combination
+    for (std::size_t mask = 0; mask < (std::size_t{1} << n); ++mask) {
+      if ((mask & idle) == 0) reduction(mask);
+    }
+  } else {
+    // three or four: from all in the cosine, each argument turned to its sine where that is
+    // better (n + 1 reductions rather than 2^n)
+    std::size_t mask = 0;
+    Expr current = reduction(mask);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!reduced_argument[i]) continue;
+      const std::size_t turned = mask | (std::size_t{1} << i);
+      if (const Expr form = reduction(turned); better(form, current)) {
+        mask = turned;
+        current = form;
+      }
     }
   }
   return best.subs(radicals);
