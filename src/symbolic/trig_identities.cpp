@@ -265,8 +265,28 @@ bool homogenizable(const Expr& x, const Expr& argument) {
 
 }  // namespace
 
+namespace {
+
+// Whether no term of the expanded x has more than one sine or cosine factor (counted with their
+// powers) and none sits elsewhere: then each term's degree in every argument is 0 or 1, the top
+// of its parity, and homogenising changes nothing.
+bool linear_in_sines_and_cosines(const Expr& x) {
+  for (const Expr& term : terms_of(x)) {
+    const auto split = split_trig_monomial(term);
+    if (!split) return false;
+    const Expr& monomial = split->first;
+    if (GiNaC::is_exactly_a<GiNaC::mul>(monomial) || GiNaC::is_exactly_a<GiNaC::power>(monomial)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 Expr homogenize_trig(const Expr& e) {
   Expr x = expand_within_budget(e, "simplifying");
+  if (linear_in_sines_and_cosines(x)) return x;
   for (const Expr& argument : trig_arguments(x)) {
     if (!homogenizable(x, argument)) continue;
     const GiNaC::symbol s, c;
