@@ -360,6 +360,26 @@ class Bench:
                     except subprocess.TimeoutExpired:
                         cells.append(f"> {limit} s")
                 self.say(f"| {name} | " + " | ".join(cells) + f" | {operations(code)} |")
+            self.say()
+            # where derive's time goes: the phases `derive --timings` reports
+            self.say("Where `derive` (textbook form) spends its time, by `derive --timings`:\n")
+            phases = {}
+            for name, path in (("pendulum-10", pendulum), ("bicycle", bicycle)):
+                try:
+                    err = subprocess.run([cli, "derive", path, "--timings"], capture_output=True,
+                                         text=True, timeout=limit, check=True).stderr
+                except subprocess.TimeoutExpired:
+                    continue
+                for line in err.splitlines():
+                    fields = line.rsplit(None, 2)
+                    if line.startswith("  ") and len(fields) == 3 and fields[2] == "s":
+                        phases.setdefault(fields[0].strip(), {})[name] = float(fields[1])
+            self.say("| phase | pendulum-10 | bicycle |")
+            self.say("|---|---|---|")
+            for phase, seconds in phases.items():
+                cells = [f"{seconds[m]:.2f} s" if m in seconds else "–"
+                         for m in ("pendulum-10", "bicycle")]
+                self.say(f"| {phase} | " + " | ".join(cells) + " |")
         self.say()
 
     # 5. Long runs ---------------------------------------------------------------------------------

@@ -26,6 +26,7 @@
 #include "unidyn/io/csv.hpp"
 #include "unidyn/io/equation_report.hpp"
 #include "unidyn/io/model_file.hpp"
+#include "unidyn/io/phase_timings.hpp"
 #include "unidyn/io/textbook_equations.hpp"
 #include "unidyn/kinematics/integrability.hpp"
 #include "unidyn/numeric/code_export.hpp"
@@ -262,12 +263,15 @@ int run_derive(const ModelCommands& c, const CommandModel& model) {
     // as the book prints them, or as the matrices
     const EquationsOfMotion eq =
         c.method == "kane" ? kane_equations(system) : lagrange_equations(system);
+    end_phase("derive (" + c.method + ")");
     if (c.form != "matrix" && format != EquationFormat::json) {
       write_textbook_lagrange(std::cout, system, eq, format, c.form == "zees");
     } else {
       write_lagrange(std::cout, system, eq, format);
+      end_phase("print");
     }
     if (format != EquationFormat::json) write_integrability(system, format);
+    end_phase("integrability of the velocity constraints");
   } else if (c.method == "newton-euler") {
     write_newton(std::cout, system, newton_equations(system), format);
   } else if (c.method == "second-form") {
@@ -291,7 +295,9 @@ int run_check(const ModelCommands& c, const CommandModel& model) {
   SimulationStart& start = initial.start;
   const EquationsOfMotion lagrange = lagrange_equations(system);
   const NewtonEquations newton = newton_equations(system);
+  end_phase("derive (lagrange, newton-euler)");
   const EquivalenceReport report = check_equivalence(system, lagrange, newton);
+  end_phase("Newton-Euler = Lagrange (exact evaluation)");
   const auto& q = system.coordinates();
   fmt::print("{}: Newton's law projected onto the partial velocities vs Lagrange's equations\n",
              system.name);
@@ -605,6 +611,7 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
                    "rates, then the rest) | zees (the same with repeated subexpressions named z1, "
                    "z2, ...) | matrix (M q'' = f + A^T lambda)")
       ->capture_default_str();
+  c.derive->add_flag("--timings", c.timings, "each phase's time on standard error");
   c.derive->add_flag("--reduced", c.reduced,
                      "approach II: eliminate the constraints that can be solved for a coordinate");
 
@@ -630,6 +637,7 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.check->add_option("model", c.model, "MODEL file or bundled model name")->required();
   c.check->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
   c.check->add_flag("--reduced", c.reduced, "check the approach-II equations");
+  c.check->add_flag("--timings", c.timings, "each phase's time on standard error");
 
   c.models = app.add_subcommand("models", "List the bundled book systems, or print one");
   c.models->add_option("name", c.model_name, "a bundled model");
@@ -638,7 +646,13 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
 int run_model_commands(const ModelCommands& c) {
   if (c.models->parsed()) return run_models(c);
   if (!c.derive->parsed() && !c.simulate->parsed() && !c.check->parsed()) return -1;
+  if (c.timings) start_phase_timings();
   const CommandModel model = read_command_model(c);
+  end_phase("read model");
+  // the timings on standard error however the command ends
+  struct Report {
+    ~Report() { fmt::print(stderr, "{}", phase_timings_report()); }
+  } report;
   try {
     if (c.derive->parsed()) return run_derive(c, model);
     if (c.simulate->parsed()) return run_simulate(c, model);

@@ -24,6 +24,7 @@ struct ModelCommands {
   std::string integrator;
   std::string model_name;
   bool reduced = false;
+  bool timings = false;  // derive, check: each phase's time on standard error
   // simulate: the old start — every value as given, then projected onto the constraints
   bool project = false;
   std::string evaluation = "native";  // simulate: native (when a compiler is present) or tape

@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "unidyn/equations/covariant_form.hpp"
+#include "unidyn/io/phase_timings.hpp"
 #include "unidyn/symbolic/common_subexpressions.hpp"
 #include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/textbook_form.hpp"
@@ -93,10 +94,13 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
   }
   // T and the convective terms read off the short M by the covariant form (4.30) where exact
   // evaluation shows them equal to the derived ones; else dug out of the derived expressions
+  end_phase("print: mass matrix");
   const std::optional<Expr> quadratic = quadratic_kinetic_energy(system, eq, M);
   const std::vector<std::optional<Expr>> convective = covariant_convective_terms(system, eq, M);
+  end_phase("print: convective terms (4.25)");
   std::vector<GroupedTerm> T = group_by_monomials(quadratic.value_or(eq.kinetic_energy), rates);
   std::vector<GroupedTerm> U{{textbook_simplify(eq.potential_energy), 1}};
+  end_phase("print: T and U");
   std::vector<std::vector<GroupedTerm>> left(q.size()), right(q.size());
   for (std::size_t i = 0; i < q.size(); ++i) {
     for (std::size_t j = 0; j < q.size(); ++j) {
@@ -114,8 +118,10 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
     }
     right[i] = group_by_monomials(sum, multipliers);
   }
+  end_phase("print: equations, grouped");
   std::vector<GroupedTerm> psi;
   for (const auto& c : system.constraints) psi.push_back({textbook_simplify(c.expression), 1});
+  end_phase("print: constraints");
   // --form zees: the coefficients' repeated subexpressions named z1, z2, …
   std::vector<GroupedTerm*> all;
   for (auto* group : {&T, &U, &psi}) {
@@ -186,6 +192,7 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
     }
     out << "\\end{align}\n";
   }
+  end_phase("print: written");
 }
 
 }  // namespace unidyn

@@ -1,0 +1,21 @@
+// Where a command's time goes, phase by phase (`unidyn derive --timings`): a wall clock read at
+// the end of each phase, reported on standard error so that the equations printed stay the same.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace unidyn {
+
+// Starts recording: the clock from now, the phases marked after this reported.
+void start_phase_timings();
+
+// Ends the phase named: the time since the previous mark (or the start) is its. Nothing when
+// recording was not started.
+void end_phase(std::string_view phase);
+
+// One line per phase, in the order they ended ("  read model          0.012 s"), and the total;
+// empty when recording was not started.
+std::string phase_timings_report();
+
+}  // namespace unidyn

@@ -1,0 +1,52 @@
+// Phase timings of a command.
+#include "unidyn/io/phase_timings.hpp"
+
+#include <fmt/format.h>
+#include <chrono>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace unidyn {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Recording {
+  Clock::time_point start, last;
+  std::vector<std::pair<std::string, double>> phases;
+};
+
+// the command's one recording (a process runs one command)
+std::optional<Recording>& recording() {
+  static std::optional<Recording> r;
+  return r;
+}
+
+}  // namespace
+
+void start_phase_timings() {
+  const Clock::time_point now = Clock::now();
+  recording() = Recording{now, now, {}};
+}
+
+void end_phase(std::string_view phase) {
+  auto& r = recording();
+  if (!r) return;
+  const Clock::time_point now = Clock::now();
+  r->phases.emplace_back(std::string(phase), std::chrono::duration<double>(now - r->last).count());
+  r->last = now;
+}
+
+std::string phase_timings_report() {
+  const auto& r = recording();
+  if (!r) return "";
+  std::string text = "timings (wall clock):\n";
+  for (const auto& [phase, seconds] : r->phases) {
+    text += fmt::format("  {:<42} {:8.3f} s\n", phase, seconds);
+  }
+  return text + fmt::format("  {:<42} {:8.3f} s\n", "in all",
+                            std::chrono::duration<double>(r->last - r->start).count());
+}
+
+}  // namespace unidyn
