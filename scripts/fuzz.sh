@@ -15,7 +15,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-30}"
 bash scripts/setup.sh fuzz
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Debug \
-  "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g" -DUNIDYN_FUZZ=ON -DUNIDYN_BUILD_TESTS=OFF \
+  "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" -DUNIDYN_FUZZ=ON -DUNIDYN_BUILD_TESTS=OFF \
   -DUNIDYN_BUILD_BENCH=OFF >/dev/null
 cmake --build build-fuzz -j "$(nproc)" --target model_file_fuzzer expression_fuzzer
 
