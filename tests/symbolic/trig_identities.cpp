@@ -65,6 +65,28 @@ TEST(TrigIdentities, Homogenisation) {
   EXPECT_EQ(canonical_text(homogenize_trig(K * pow(sin(b), 2))), "K*sin(b)^2");
 }
 
+// Collected in the sines and cosines: one term per product of their powers, the coefficients
+// summed; none where a sine sits under a root or there is none.
+TEST(TrigIdentities, CollectionInSinesAndCosines) {
+  using GiNaC::cos;
+  using GiNaC::pow;
+  using GiNaC::sin;
+  const Expr e = (K + m) * sin(a) + K * m * sin(a) * cos(b) - m * sin(a) * cos(b) +
+                 K * pow(cos(a), 2) + m * pow(cos(a), 2) + K;
+  const auto collected = collect_in_sines_and_cosines(e);
+  ASSERT_TRUE(collected.has_value());
+  EXPECT_EQ(canonical_text(*collected),
+            canonical_text((K + m) * sin(a) + (K * m - m) * sin(a) * cos(b) +
+                           (K + m) * pow(cos(a), 2) + K));
+  expect_equal_values(*collected, e);
+  // a term per product: four here
+  ASSERT_TRUE(GiNaC::is_exactly_a<GiNaC::add>(*collected));
+  EXPECT_EQ(collected->nops(), 4u);
+  EXPECT_FALSE(collect_in_sines_and_cosines(K * GiNaC::sqrt(sin(a)) + sin(a)).has_value());
+  EXPECT_FALSE(collect_in_sines_and_cosines(K / cos(a) + sin(a)).has_value());
+  EXPECT_FALSE(collect_in_sines_and_cosines(K * m + K).has_value());
+}
+
 TEST(TrigIdentities, ArgumentsInTheCanonicalOrder) {
   const auto arguments = trig_arguments(GiNaC::cos(b) * GiNaC::sin(a + b) + GiNaC::sin(a));
   ASSERT_EQ(arguments.size(), 3u);
