@@ -270,8 +270,10 @@ int run_derive(const ModelCommands& c, const CommandModel& model) {
       write_lagrange(std::cout, system, eq, format);
       end_phase("print");
     }
-    if (format != EquationFormat::json) write_integrability(system, format);
-    end_phase("integrability of the velocity constraints");
+    if (format != EquationFormat::json) {
+      write_integrability(system, format);
+      end_phase("integrability of the velocity constraints");
+    }
   } else if (c.method == "newton-euler") {
     write_newton(std::cout, system, newton_equations(system), format);
   } else if (c.method == "second-form") {

@@ -14,8 +14,9 @@ void start_phase_timings();
 // recording was not started.
 void end_phase(std::string_view phase);
 
-// One line per phase, in the order they ended ("  read model          0.012 s"), and the total;
-// empty when recording was not started.
+// One line per phase, in the order they ended ("  read model          0.012 s"), "the rest" since
+// the last one when that shows in milliseconds, and the total; empty when recording was not
+// started.
 std::string phase_timings_report();
 
 }  // namespace unidyn
