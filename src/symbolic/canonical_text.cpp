@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -30,33 +31,6 @@ bool is_odd(const Expr& x) {
 bool is_power_of_sum(const Expr& e) {
   return is_exactly_a<GiNaC::power>(e) && is_exactly_a<GiNaC::add>(e.op(0)) &&
          e.op(1).info(GiNaC::info_flags::integer);
-}
-
-// How many primes end the name of a symbol in e (2 at most): 1 for a rate q', 2 for an
-// acceleration q'' (symbolic/coordinates.hpp names them so).
-int derivative_order(const Expr& e) {
-  if (GiNaC::is_a<GiNaC::symbol>(e)) {
-    const std::string& name = GiNaC::ex_to<GiNaC::symbol>(e).get_name();
-    int primes = 0;
-    while (primes < 2 && name.size() > std::size_t(primes) &&
-           name[name.size() - 1 - std::size_t(primes)] == '\'') {
-      ++primes;
-    }
-    return primes;
-  }
-  int order = 0;
-  for (std::size_t i = 0; i < e.nops(); ++i) order = std::max(order, derivative_order(e.op(i)));
-  return order;
-}
-
-// Where a factor goes in a product, as a book writes it: sums, then parameters and coordinates,
-// then functions (sin θ), then what has rates, then what has accelerations:
-// (m1 + m2) l1² cos θ1 θ̇1 θ̈2.
-int factor_rank(const Expr& f) {
-  if (const int order = derivative_order(f); order > 0) return 2 + order;
-  if (is_exactly_a<GiNaC::add>(f)) return 0;
-  const Expr base = is_exactly_a<GiNaC::power>(f) ? f.op(0) : f;
-  return is_exactly_a<GiNaC::function>(base) ? 2 : 1;
 }
 
 // A product split into its number and its other factors; anything else is 1 × itself.
@@ -132,6 +106,37 @@ class Printer {
   const GiNaC::basic* node(const Expr& e) {
     keep_.push_back(e);
     return &GiNaC::ex_to<GiNaC::basic>(e);
+  }
+
+  // How many primes end the name of a symbol in e (2 at most): 1 for a rate q', 2 for an
+  // acceleration q'' (symbolic/coordinates.hpp names them so); remembered for each node.
+  int derivative_order(const Expr& e) {
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+      const std::string& name = GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+      int primes = 0;
+      while (primes < 2 && name.size() > std::size_t(primes) &&
+             name[name.size() - 1 - std::size_t(primes)] == '\'') {
+        ++primes;
+      }
+      return primes;
+    }
+    if (e.nops() == 0) return 0;
+    const GiNaC::basic* key = node(e);
+    if (const auto found = orders_.find(key); found != orders_.end()) return found->second;
+    int order = 0;
+    for (std::size_t i = 0; i < e.nops(); ++i) order = std::max(order, derivative_order(e.op(i)));
+    orders_.emplace(key, order);
+    return order;
+  }
+
+  // Where a factor goes in a product, as a book writes it: sums, then parameters and coordinates,
+  // then functions (sin θ), then what has rates, then what has accelerations:
+  // (m1 + m2) l1² cos θ1 θ̇1 θ̈2.
+  int factor_rank(const Expr& f) {
+    if (const int order = derivative_order(f); order > 0) return 2 + order;
+    if (is_exactly_a<GiNaC::add>(f)) return 0;
+    const Expr base = is_exactly_a<GiNaC::power>(f) ? f.op(0) : f;
+    return is_exactly_a<GiNaC::function>(base) ? 2 : 1;
   }
 
   std::string open() const { return latex_ ? "\\left(" : "("; }
@@ -334,6 +339,7 @@ class Printer {
   bool latex_, sympy_;
   std::map<std::pair<const GiNaC::basic*, unsigned>, std::string> memo_;
   std::map<const GiNaC::basic*, std::unique_ptr<Parts>> parts_;
+  std::unordered_map<const GiNaC::basic*, int> orders_;
   std::vector<Expr> keep_;
 };
 

@@ -25,6 +25,8 @@ double multinomial_terms(double n, double k) {
 class Bound {
  public:
   double operator()(const Expr& e) {
+    // an atom (a symbol, a number) is one term, not worth remembering
+    if (e.nops() == 0) return 1;
     const auto* node = &GiNaC::ex_to<GiNaC::basic>(e);
     if (const auto it = memo_.find(node); it != memo_.end()) return it->second.second;
     double terms = 1;
