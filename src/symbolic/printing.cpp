@@ -118,6 +118,25 @@ struct SimplifyInside : GiNaC::map_function {
 }  // namespace
 
 std::size_t expression_size(const Expr& e) {
+  // a sign is not a node: −x counts as x, −(a − b) c as (b − a) c (GiNaC picks the sign of a sum
+  // by its own order of terms, which moves with the memory layout)
+  if (GiNaC::is_exactly_a<GiNaC::mul>(e)) {
+    std::size_t size = 1, factors = 0;
+    bool unit = true;
+    Expr only;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      const Expr factor = e.op(i);
+      if (GiNaC::is_exactly_a<GiNaC::numeric>(factor)) {
+        unit = unit && GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(factor)).is_equal(1);
+        if (!unit) ++size;
+        continue;
+      }
+      ++factors;
+      only = factor;
+      size += expression_size(factor);
+    }
+    return factors == 1 && unit ? expression_size(only) : size;
+  }
   std::size_t size = 1;
   for (std::size_t i = 0; i < e.nops(); ++i) size += expression_size(e.op(i));
   return size;

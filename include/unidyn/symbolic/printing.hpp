@@ -8,7 +8,8 @@
 
 namespace unidyn {
 
-// The number of nodes of an expression tree: the measure "simpler" means here.
+// The number of nodes of an expression tree, a product's sign (a factor ±1) not counted: the
+// measure "simpler" means here, the same for −x and x and for either sign GiNaC gives a sum.
 std::size_t expression_size(const Expr& e);
 
 // Expanded, with sin²x + cos²x = 1 applied wherever it makes the expression smaller (each
