@@ -236,40 +236,72 @@ class Builder {
     }
   }
 
-  // The value of e; every structurally equal subexpression is compiled once.
-  Value compile(const ex& e) {
-    if (const auto found = memo_.find(e); found != memo_.end()) return found->second;
-    const Value v = compile_uncached(e);
-    if (v.kind == Value::Kind::constant && !std::isfinite(constants_[v.index]))
-      fail("constant subexpression is not a finite real number", e);
-    memo_.emplace(e, v);
-    return v;
-  }
+  // The value of e in a register (a negated one negated by an instruction).
+  Value compile(const ex& e) { return plain(signed_value(e)); }
 
   const std::vector<double>& constants() const { return constants_; }
   std::vector<Node>& nodes() { return nodes_; }
   std::uint32_t temp_count() const { return temp_count_; }
 
  private:
+  // A register and whether its value is to be negated. Signs travel with the values through
+  // sums and products and become instructions only where a function, a root or an output needs
+  // them: −x(a − b) and x(b − a), which GiNaC writes either way by its own order of terms (and so
+  // by the memory layout), make one tape; a negation in IEEE arithmetic is exact, so the values
+  // are those of the expression as written.
+  struct Signed {
+    Value value;
+    bool negative = false;
+  };
+  // The value of s in a register: a negated difference turned (b − a for a − b), a negated
+  // product or quotient of a number with the number negated, else a negation.
+  Value plain(Signed s) {
+    if (!s.negative) return s.value;
+    if (s.value.kind == Value::Kind::temp) {
+      const Node n = nodes_[s.value.index];  // (the instruction that made temporary i is the i-th)
+      if (n.op == TapeOp::sub) return emit(TapeOp::sub, n.b, n.a);
+      if (n.op == TapeOp::mul || n.op == TapeOp::div) {
+        if (n.a.kind == Value::Kind::constant)
+          return emit(n.op, constant(-constants_[n.a.index]), n.b);
+        if (n.b.kind == Value::Kind::constant)
+          return emit(n.op, n.a, constant(-constants_[n.b.index]));
+      }
+    }
+    return emit(TapeOp::neg, s.value);
+  }
+  static Signed negated(Signed s, bool negate = true) { return {s.value, s.negative != negate}; }
+
+  // e as a signed register; every structurally equal subexpression is compiled once.
+  Signed signed_value(const ex& e) {
+    if (const auto found = memo_.find(e); found != memo_.end()) return found->second;
+    const Signed v = compile_uncached(e);
+    if (v.value.kind == Value::Kind::constant && !std::isfinite(constants_[v.value.index]))
+      fail("constant subexpression is not a finite real number", e);
+    memo_.emplace(e, v);
+    return v;
+  }
+
   // Dispatch on the GiNaC class.
-  Value compile_uncached(const ex& e) {
+  Signed compile_uncached(const ex& e) {
     if (is_exactly_a<GiNaC::numeric>(e)) return compile_numeric(GiNaC::ex_to<GiNaC::numeric>(e));
-    if (is_a<GiNaC::symbol>(e)) return compile_symbol(e);
-    if (is_exactly_a<GiNaC::constant>(e)) return compile_constant(e);
+    if (is_a<GiNaC::symbol>(e)) return {compile_symbol(e)};
+    if (is_exactly_a<GiNaC::constant>(e)) return {compile_constant(e)};
     if (is_exactly_a<GiNaC::add>(e)) return compile_add(e);
     if (is_exactly_a<GiNaC::mul>(e)) return compile_mul(e);
     if (is_exactly_a<GiNaC::power>(e)) return compile_power(e);
     if (is_a<GiNaC::fderivative>(e)) fail("unevaluated derivative", e);
-    if (is_exactly_a<GiNaC::function>(e)) return compile_function(e);
+    if (is_exactly_a<GiNaC::function>(e)) return {compile_function(e)};
     fail(std::string("unsupported expression (GiNaC class ") +
              GiNaC::ex_to<GiNaC::basic>(e).class_name() + ")",
          e);
   }
 
-  // Real numbers (exact rationals rounded to double); complex ones are refused.
-  Value compile_numeric(const GiNaC::numeric& n) {
+  // Real numbers (exact rationals rounded to double): the magnitude, and the sign; complex ones
+  // are refused.
+  Signed compile_numeric(const GiNaC::numeric& n) {
     if (!n.is_real()) fail("complex number", n);
-    return constant(n.to_double());
+    const double d = n.to_double();
+    return {constant(std::fabs(d)), std::signbit(d)};
   }
 
   // An input symbol: its register; any other symbol is refused.
@@ -285,33 +317,35 @@ class Builder {
     return constant(std::numbers::pi);
   }
 
-  // Sum: positive terms added, terms with a negative coefficient subtracted.
-  Value compile_add(const ex& e) {
-    std::vector<ex> plus, minus;
+  // Sum: the terms, each without its sign, in the order of their stable keys, each added or
+  // subtracted by its sign (so that a sum and its negative make one instruction sequence).
+  Signed compile_add(const ex& e) {
+    std::vector<std::pair<ex, bool>> terms;
     for (std::size_t i = 0; i < e.nops(); ++i) {
       const ex term = e.op(i);
-      if (coefficient(term).is_negative()) {
-        minus.push_back(-term);
-      } else {
-        plus.push_back(term);
-      }
+      const bool negative = coefficient(term).is_negative();
+      terms.emplace_back(negative ? -term : term, negative);
     }
-    if (plus.empty()) return emit(TapeOp::neg, compile(-e));
-    sort_reproducibly(plus);
-    sort_reproducibly(minus);
-    Value sum = compile(plus.front());
-    for (std::size_t i = 1; i < plus.size(); ++i) sum = emit(TapeOp::add, sum, compile(plus[i]));
-    for (const ex& term : minus) sum = emit(TapeOp::sub, sum, compile(term));
+    std::stable_sort(terms.begin(), terms.end(), [this](const auto& a, const auto& b) {
+      return stable_key(a.first) < stable_key(b.first);
+    });
+    Signed sum = negated(signed_value(terms.front().first), terms.front().second);
+    for (std::size_t i = 1; i < terms.size(); ++i) {
+      const Signed term = negated(signed_value(terms[i].first), terms[i].second);
+      // ±(x + y) or ±(x − y), the sign of the sum so far
+      const TapeOp op = term.negative == sum.negative ? TapeOp::add : TapeOp::sub;
+      sum = {emit(op, sum.value, term.value), sum.negative};
+    }
     return sum;
   }
 
   // Product: coefficient × (numerator factors) / (denominator factors).
-  Value compile_mul(const ex& e) {
+  Signed compile_mul(const ex& e) {
     const GiNaC::numeric c = coefficient(e);
     GiNaC::exvector factors;
     for (std::size_t i = 0; i < (c.is_equal(1) ? e.nops() : e.nops() - 1); ++i)
       factors.push_back(e.op(i));
-    if (!c.is_equal(1)) return scale(c, compile(GiNaC::mul(factors)), e);
+    if (!c.is_equal(1)) return scale(c, signed_value(GiNaC::mul(factors)), e);
     GiNaC::exvector numerator, denominator;
     for (const ex& factor : factors) {
       if (is_reciprocal_factor(factor)) {
@@ -321,45 +355,59 @@ class Builder {
       }
     }
     if (denominator.empty()) return product(numerator);
-    const Value below = compile(GiNaC::mul(denominator));
-    if (numerator.empty()) return emit(TapeOp::recip, below);
-    return emit(TapeOp::div, compile(GiNaC::mul(numerator)), below);
+    const Signed below = signed_value(GiNaC::mul(denominator));
+    if (numerator.empty()) return {emit(TapeOp::recip, below.value), below.negative};
+    const Signed above = signed_value(GiNaC::mul(numerator));
+    return {emit(TapeOp::div, above.value, below.value), above.negative != below.negative};
   }
 
-  // c · v, with c = −1 as a negation.
-  Value scale(const GiNaC::numeric& c, Value v, const ex& e) {
+  // c · v: |c| · v (none for ±1) and the sign of c.
+  Signed scale(const GiNaC::numeric& c, Signed v, const ex& e) {
     if (!c.is_real()) fail("complex number " + str(c) + " in", e);
-    if (c.is_equal(-1)) return emit(TapeOp::neg, v);
-    return emit(TapeOp::mul, compile_numeric(c), v);
+    const Signed number = compile_numeric(c);
+    const Value magnitude =
+        constants_[number.value.index] == 1.0 ? v.value : emit(TapeOp::mul, number.value, v.value);
+    return {magnitude, v.negative != number.negative};
   }
 
   // Left fold of a product of factors with positive or symbolic exponents.
   // Factors in register order, so that products sharing factors share partial products.
-  Value product(GiNaC::exvector factors) {
+  Signed product(GiNaC::exvector factors) {
     sort_reproducibly(factors);
     std::vector<Value> values;
-    for (const ex& f : factors) values.push_back(compile(f));
+    bool negative = false;
+    for (const ex& f : factors) {
+      const Signed v = signed_value(f);
+      values.push_back(v.value);
+      negative = negative != v.negative;
+    }
     std::sort(values.begin(), values.end());
     Value p = values.front();
     for (std::size_t i = 1; i < values.size(); ++i) p = emit(TapeOp::mul, p, values[i]);
-    return p;
+    return {p, negative};
   }
 
-  // base^exponent: integer and half-integer exponents by multiplication and sqrt, else std::pow.
-  Value compile_power(const ex& e) {
+  // base^exponent: integer and half-integer exponents by multiplication and sqrt, else std::pow;
+  // an integer power of a negated value is its power, negated when the exponent is odd.
+  Signed compile_power(const ex& e) {
     const ex exponent = e.op(1);
     if (!is_exactly_a<GiNaC::numeric>(exponent))
-      return emit(TapeOp::pow, compile(e.op(0)), compile(exponent));
+      return {emit(TapeOp::pow, compile(e.op(0)), compile(exponent))};
     const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(exponent);
     if (!n.is_real()) fail("complex number", exponent);
-    const Value base = compile(e.op(0));
     const double d = n.to_double();
     const double twice = 2.0 * d;
     if (std::floor(twice) != twice || std::fabs(twice) > 2.0 * kMaxMultipliedPower)
-      return emit(TapeOp::pow, base, constant(d));
+      return {emit(TapeOp::pow, compile(e.op(0)), constant(d))};
     const auto halves = static_cast<long>(twice);
-    if (halves < 0) return emit(TapeOp::recip, half_power(base, -halves));
-    return half_power(base, halves);
+    const Signed base = signed_value(e.op(0));
+    if (halves % 2 != 0) {
+      const Value root = half_power(plain(base), std::labs(halves));
+      return {halves < 0 ? emit(TapeOp::recip, root) : root};
+    }
+    const long k = halves / 2;
+    const Value power = integer_power(base.value, std::labs(k));
+    return {k < 0 ? emit(TapeOp::recip, power) : power, base.negative && k % 2 != 0};
   }
 
   // base^(halves/2) for halves > 0: x^k or x^k · √x.
@@ -421,28 +469,71 @@ class Builder {
   // A hash of e's structure that, unlike GiNaC's (which depends on where the library is loaded),
   // is the same in every run: compiling sums and products in its order makes the tape, and so
   // every rounding, reproducible from run to run.
-  std::uint64_t stable_key(const ex& e) {
+  std::uint64_t stable_key(const ex& e) { return signed_key(e).first; }
+
+  // The stable key of e blind to its sign, and that sign: x and −x, x (a − b) and −x (b − a)
+  // have one key and opposite signs, as the compiled values have one register and opposite
+  // flags. A sum's sign is that of its term of least key; its key holds its terms' keys and
+  // their signs relative to that one (a − b and a + b differ).
+  std::pair<std::uint64_t, int> signed_key(const ex& e) {
     if (const auto found = keys_.find(e); found != keys_.end()) return found->second;
     std::uint64_t key = hash_text(GiNaC::ex_to<GiNaC::basic>(e).class_name());
-    if (is_a<GiNaC::symbol>(e) || is_exactly_a<GiNaC::numeric>(e) ||
-        is_exactly_a<GiNaC::constant>(e)) {
+    int sign = 1;
+    if (is_exactly_a<GiNaC::numeric>(e)) {
+      const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+      key = mix(key, hash_text(str(GiNaC::abs(n))));
+      sign = n.is_negative() ? -1 : 1;
+    } else if (is_a<GiNaC::symbol>(e) || is_exactly_a<GiNaC::constant>(e)) {
       key = mix(key, hash_text(str(e)));
+    } else if (is_exactly_a<GiNaC::add>(e)) {
+      std::vector<std::pair<std::uint64_t, int>> terms;
+      for (std::size_t i = 0; i < e.nops(); ++i) terms.push_back(signed_key(e.op(i)));
+      std::sort(terms.begin(), terms.end());
+      sign = terms.front().second;
+      for (const auto& [k, s] : terms) key = mix(mix(key, k), s == sign ? 1 : 2);
+    } else if (is_exactly_a<GiNaC::mul>(e)) {
+      // a product's ±1 is no factor; −x has x's key
+      std::vector<std::uint64_t> factors;
+      for (std::size_t i = 0; i < e.nops(); ++i) {
+        const ex f = e.op(i);
+        const auto [k, s] = signed_key(f);
+        sign *= s;
+        const bool unit = is_exactly_a<GiNaC::numeric>(f) &&
+                          GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(f)).is_equal(1);
+        if (!unit) factors.push_back(k);
+      }
+      std::sort(factors.begin(), factors.end());
+      if (factors.size() == 1) {
+        key = factors.front();
+      } else {
+        for (const std::uint64_t k : factors) key = mix(key, k);
+      }
+    } else if (is_exactly_a<GiNaC::power>(e)) {
+      // an integer power of −x is ± that of x; any other is another value
+      const auto [base, base_sign] = signed_key(e.op(0));
+      const ex exponent = e.op(1);
+      key = mix(mix(key, base), stable_key(exponent));
+      if (exponent.info(GiNaC::info_flags::odd)) {
+        sign = base_sign;
+      } else if (!exponent.info(GiNaC::info_flags::even)) {
+        key = mix(key, base_sign > 0 ? 1 : 2);
+      }
     } else {
+      // a function of −x is another value
       if (is_a<GiNaC::function>(e))
         key = mix(key, hash_text(GiNaC::ex_to<GiNaC::function>(e).get_name()));
-      std::vector<std::uint64_t> children;
-      for (std::size_t i = 0; i < e.nops(); ++i) children.push_back(stable_key(e.op(i)));
-      if (is_exactly_a<GiNaC::add>(e) || is_exactly_a<GiNaC::mul>(e))
-        std::sort(children.begin(), children.end());
-      for (const std::uint64_t child : children) key = mix(key, child);
+      for (std::size_t i = 0; i < e.nops(); ++i) {
+        const auto [k, s] = signed_key(e.op(i));
+        key = mix(mix(key, k), s > 0 ? 1 : 2);
+      }
     }
-    keys_.emplace(e, key);
-    return key;
+    keys_.emplace(e, std::make_pair(key, sign));
+    return {key, sign};
   }
 
   std::unordered_map<ex, std::uint32_t, std::hash<ex>, GiNaC::ex_is_equal> inputs_;
-  std::unordered_map<ex, std::uint64_t, std::hash<ex>, GiNaC::ex_is_equal> keys_;
-  std::unordered_map<ex, Value, std::hash<ex>, GiNaC::ex_is_equal> memo_;
+  std::unordered_map<ex, std::pair<std::uint64_t, int>, std::hash<ex>, GiNaC::ex_is_equal> keys_;
+  std::unordered_map<ex, Signed, std::hash<ex>, GiNaC::ex_is_equal> memo_;
   std::map<std::tuple<TapeOp, Value, Value>, Value> numbering_;
   std::unordered_map<std::uint64_t, std::uint32_t> constant_index_;
   std::vector<double> constants_;

@@ -75,8 +75,9 @@ class Evaluator {
       return constant(n.is_real() ? n.to_double() : NAN);
     }
     if (is_exactly_a<GiNaC::add>(e) || is_exactly_a<GiNaC::mul>(e)) {
-      // the operands' values in increasing order, not GiNaC's (which changes from build to
-      // build): the same rounding whatever order the terms are kept in
+      // the operands' values in increasing magnitude (then value), not GiNaC's order (which
+      // changes from build to build): the same rounding whatever order the terms are kept in,
+      // and for −(b − a) as for a − b, which GiNaC writes either way; a zero without a sign
       const bool sum = is_exactly_a<GiNaC::add>(e);
       std::vector<const Values*> operands;
       for (const auto& operand : e) operands.push_back(&(*this)(operand));
@@ -92,10 +93,12 @@ class Evaluator {
           result[k] = NAN;
           continue;
         }
-        std::sort(at.begin(), at.end());
+        std::sort(at.begin(), at.end(), [](double a, double b) {
+          return std::fabs(a) != std::fabs(b) ? std::fabs(a) < std::fabs(b) : a < b;
+        });
         double r = sum ? 0.0 : 1.0;
         for (const double v : at) r = sum ? r + v : r * v;
-        result[k] = r;
+        result[k] = r == 0.0 ? 0.0 : r;
       }
       return result;
     }

@@ -313,6 +313,36 @@ TEST(Tape, ProductsAndSumsAreFlattened) {
   EXPECT_EQ(instructions(x + y + z + s.w + 1, in), 4u);
 }
 
+// GiNaC gives a product its sign, and puts it into one of its sums, by its order of terms (which
+// follows the memory layout): one product is −(x + a)(a − b + c) in one run, (x + a)(b − a − c)
+// in another (made here as such, held from GiNaC's evaluation). Both make one tape, whose values
+// are the expression's to the last bit (a negation is exact); so do (a − b)³(c − x)(x − a) and
+// (b − a)³(c − x)(a − x).
+TEST(Tape, EitherSignOfASumMakesOneTape) {
+  const Symbols s;
+  const ex x = s.x, a = s.y, b = s.z, c = s.w;
+  const std::vector<symbol> in = s.all();
+  const auto held = [](const GiNaC::exvector& factors) -> ex { return GiNaC::mul(factors).hold(); };
+  const ex negated = held({a - b + c, x + a, ex(-1)}), turned = held({b - a - c, x + a});
+  const ex cube = held({GiNaC::pow(a - b, 3), c - x, x - a}),
+           turned_cube = held({GiNaC::pow(b - a, 3), c - x, a - x});
+  ASSERT_FALSE(negated.is_equal(turned));
+  ASSERT_FALSE(cube.is_equal(turned_cube));
+  ASSERT_TRUE((negated - turned).expand().is_zero());
+  ASSERT_TRUE((cube - turned_cube).expand().is_zero());
+  const Tape t1 = Tape::compile({negated, 1 + negated, cube}, in);
+  const Tape t2 = Tape::compile({turned, 1 + turned, turned_cube}, in);
+  EXPECT_EQ(t1.listing(), t2.listing());
+  const std::vector<double> point{0.3, -1.7, 2.9, 0.125};
+  EXPECT_EQ(t1.evaluate(point), t2.evaluate(point));
+  const GiNaC::exmap exact_point{
+      {x, exact(0.3)}, {a, exact(-1.7)}, {b, exact(2.9)}, {c, exact(0.125)}};
+  EXPECT_TRUE(close(t1.evaluate(point)[0], ginac_value(negated, exact_point)));
+  EXPECT_TRUE(close(t1.evaluate(point)[2], ginac_value(cube, exact_point)));
+  // a − b and a + b are not one sum
+  EXPECT_NE(Tape::compile({(a - b) * x}, in).listing(), Tape::compile({(a + b) * x}, in).listing());
+}
+
 // sin and cos of one argument are one sincos instruction.
 TEST(Tape, SinAndCosOfOneArgumentShareOneInstruction) {
   const Symbols s;

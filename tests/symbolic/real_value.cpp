@@ -23,6 +23,31 @@ TEST(RealValue, ValuesOfTheModelLanguagesFunctions) {
   EXPECT_DOUBLE_EQ(*real_value(GiNaC::exp(GiNaC::log(m)), values), 1.5);
 }
 
+// GiNaC gives a product its sign, and puts it into one of its sums, by its order of terms (which
+// follows the memory layout): one product is −(L + a)(a − b + c) in one run, (L + a)(b − a − c)
+// in another (made here as such, held from GiNaC's evaluation). One value to the last bit, and a
+// zero without a sign (a zero's sign would move atan2 by 2π).
+TEST(RealValue, EitherSignOfASumGivesOneValue) {
+  const GiNaC::realsymbol L("L"), a("a"), b("b"), c("c");
+  const auto held = [](const GiNaC::exvector& factors) -> Expr {
+    return GiNaC::mul(factors).hold();
+  };
+  const Expr negated = held({a - b + c, L + a, Expr(-1)}), turned = held({b - a - c, L + a});
+  ASSERT_FALSE(negated.is_equal(turned));
+  const GiNaC::exmap values{{L, GiNaC::numeric(7, 3)},
+                            {a, GiNaC::numeric(1, 10)},
+                            {b, GiNaC::numeric(-2, 7)},
+                            {c, GiNaC::numeric(5, 11)}};
+  EXPECT_EQ(*real_value(negated, values), *real_value(turned, values));
+  const GiNaC::exmap zero{{L, 2}, {a, 1}, {b, 1}, {c, 0}};
+  for (const Expr& product : {negated, turned}) {
+    const double v = *real_value(product, zero);
+    EXPECT_EQ(v, 0.0);
+    EXPECT_FALSE(std::signbit(v));
+    EXPECT_EQ(*real_value(GiNaC::atan2(product, -L), zero), std::numbers::pi);
+  }
+}
+
 TEST(RealValue, NoValueWithoutAnException) {
   const GiNaC::realsymbol m("m"), x("x");
   const GiNaC::exmap zero{{m, 0}};
