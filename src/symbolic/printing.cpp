@@ -25,7 +25,9 @@ struct CanonicalLess {
 // the canonical order (so that the choice never depends on GiNaC's order).
 bool better(const Expr& candidate, const Expr& best) {
   const std::size_t a = expression_size(candidate), b = expression_size(best);
-  return a < b || (a == b && canonical_less(candidate, best));
+  if (a != b) return a < b;
+  // (one expression is not better than itself: nothing to print)
+  return !candidate.is_equal(best) && canonical_less(candidate, best);
 }
 
 // Pairs (v, w) of the sine and cosine symbols of one argument, v the one reduced.

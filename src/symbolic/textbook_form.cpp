@@ -107,7 +107,8 @@ Expr textbook_simplify_uncached(const Expr& e) {
 
 }  // namespace
 
-std::vector<GroupedTerm> group_by_monomials(const Expr& e, const std::vector<Expr>& symbols) {
+std::vector<GroupedTerm> group_by_monomials(const Expr& e, const std::vector<Expr>& symbols,
+                                            Expr (*simplifier)(const Expr&)) {
   const Expr x = expand_within_budget(e, "grouping");
   std::map<std::vector<int>, std::vector<Expr>> groups;
   const auto add_term = [&](const Expr& term) {
@@ -134,7 +135,7 @@ std::vector<GroupedTerm> group_by_monomials(const Expr& e, const std::vector<Exp
   });
   std::vector<GroupedTerm> grouped;
   for (const auto& [exponents, coefficient] : ordered) {
-    const Expr c = textbook_simplify(coefficient);
+    const Expr c = simplifier(coefficient);
     if (c.is_zero()) continue;
     Expr monomial = 1;
     for (std::size_t i = 0; i < symbols.size(); ++i)

@@ -150,10 +150,11 @@ TEST(HostileInput, ExpansionsStopWithinTheBudget) {
   write_file(path,
              "unidyn: 1\nparameters: {m: 1, g: 1}\ncoordinates: [x, y]\nparticles:\n"
              "  P: {mass: m, position: [\"(x+y+m+g+1)^13\", y, 0]}\n");
-  // printing simplifies, so expands (check decides by exact evaluation, without expanding)
+  // printing groups by products of rates, so expands (check decides by exact evaluation, without
+  // expanding)
   const Outcome r = run("derive --form matrix '" + path + "'");
   EXPECT_EQ(r.status, 2) << r.out << r.err;
-  EXPECT_TRUE(contains(r.err, path + ":5:28: simplifying: an expansion would make")) << r.err;
+  EXPECT_TRUE(contains(r.err, path + ":5:28: grouping: an expansion would make")) << r.err;
   EXPECT_TRUE(contains(r.err, "the model's largest power of a sum is here")) << r.err;
   const Outcome checked = run("check '" + path + "'");
   EXPECT_EQ(checked.status, 0) << checked.out << checked.err;

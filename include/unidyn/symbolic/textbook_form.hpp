@@ -17,13 +17,15 @@ namespace unidyn {
 Expr textbook_simplify(const Expr& e);
 
 // A sum as Σ coefficient × monomial over the monomials in `symbols` it contains (1 for the part
-// free of them), each coefficient textbook-simplified, zero ones left out; by degree, highest
-// first, then by the exponents in the order of `symbols` (x² before x y before y²).
+// free of them), each coefficient simplified by `simplifier` (textbook_simplify unless given),
+// zero ones left out; by degree, highest first, then by the exponents in the order of `symbols`
+// (x² before x y before y²).
 struct GroupedTerm {
   Expr coefficient;
   Expr monomial;
 };
-std::vector<GroupedTerm> group_by_monomials(const Expr& e, const std::vector<Expr>& symbols);
+std::vector<GroupedTerm> group_by_monomials(const Expr& e, const std::vector<Expr>& symbols,
+                                            Expr (*simplifier)(const Expr&) = textbook_simplify);
 
 // The terms joined as a person writes them: "a + b - c", the first one's sign kept.
 std::string join_terms(const std::vector<std::string>& texts);
