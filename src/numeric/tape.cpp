@@ -370,8 +370,9 @@ class Builder {
     return {magnitude, v.negative != number.negative};
   }
 
-  // Left fold of a product of factors with positive or symbolic exponents.
-  // Factors in register order, so that products sharing factors share partial products.
+  // Left fold of a product of factors with positive or symbolic exponents: first any product of
+  // two of them made already (by an earlier product, whatever its order), then the rest in
+  // register order, so that products sharing factors share partial products.
   Signed product(GiNaC::exvector factors) {
     sort_reproducibly(factors);
     std::vector<Value> values;
@@ -382,9 +383,26 @@ class Builder {
       negative = negative != v.negative;
     }
     std::sort(values.begin(), values.end());
+    while (values.size() > 2 && take_made_pair(values)) std::sort(values.begin(), values.end());
     Value p = values.front();
     for (std::size_t i = 1; i < values.size(); ++i) p = emit(TapeOp::mul, p, values[i]);
     return {p, negative};
+  }
+
+  // The first pair of `values` (in their order) whose product an instruction makes already:
+  // replaced by that product. Whether there was one.
+  bool take_made_pair(std::vector<Value>& values) const {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      for (std::size_t j = i + 1; j < values.size(); ++j) {
+        const auto made = numbering_.find(std::make_tuple(
+            TapeOp::mul, std::min(values[i], values[j]), std::max(values[i], values[j])));
+        if (made == numbering_.end()) continue;
+        values[i] = made->second;
+        values.erase(values.begin() + static_cast<std::ptrdiff_t>(j));
+        return true;
+      }
+    }
+    return false;
   }
 
   // base^exponent: integer and half-integer exponents by multiplication and sqrt, else std::pow;

@@ -343,6 +343,17 @@ TEST(Tape, EitherSignOfASumMakesOneTape) {
   EXPECT_NE(Tape::compile({(a - b) * x}, in).listing(), Tape::compile({(a + b) * x}, in).listing());
 }
 
+// A product reuses any product of two of its factors made already, not only one its register
+// order begins with: y z, then x y z as x (y z) — two multiplications, not three.
+TEST(Tape, ProductsReuseMadePairs) {
+  const Symbols s;
+  const Tape tape = Tape::compile({s.y * s.z, s.x * s.y * s.z}, s.all());
+  EXPECT_EQ(tape.instruction_count(), 2u) << tape.listing();
+  const std::vector<double> out = tape.evaluate(std::vector<double>{2.0, 3.0, 5.0, 0.0});
+  EXPECT_EQ(out[0], 15.0);
+  EXPECT_EQ(out[1], 30.0);
+}
+
 // sin and cos of one argument are one sincos instruction.
 TEST(Tape, SinAndCosOfOneArgumentShareOneInstruction) {
   const Symbols s;
