@@ -329,14 +329,48 @@ class Builder {
     std::stable_sort(terms.begin(), terms.end(), [this](const auto& a, const auto& b) {
       return stable_key(a.first) < stable_key(b.first);
     });
-    Signed sum = negated(signed_value(terms.front().first), terms.front().second);
-    for (std::size_t i = 1; i < terms.size(); ++i) {
-      const Signed term = negated(signed_value(terms[i].first), terms[i].second);
+    std::vector<Signed> values;
+    for (const auto& [term, negative] : terms)
+      values.push_back(negated(signed_value(term), negative));
+    while (values.size() > 2 && take_made_sum(values)) {
+    }
+    Signed sum = values.front();
+    for (std::size_t i = 1; i < values.size(); ++i) {
+      const Signed& term = values[i];
       // ±(x + y) or ±(x − y), the sign of the sum so far
       const TapeOp op = term.negative == sum.negative ? TapeOp::add : TapeOp::sub;
       sum = {emit(op, sum.value, term.value), sum.negative};
     }
     return sum;
+  }
+
+  // The first pair of signed terms (in their order) whose sum or difference an instruction makes
+  // already: replaced by it, in the first one's place. Whether there was one.
+  bool take_made_sum(std::vector<Signed>& values) const {
+    const auto made = [this](TapeOp op, Value a, Value b) -> std::optional<Value> {
+      if (op == TapeOp::add && b < a) std::swap(a, b);
+      const auto found = numbering_.find(std::make_tuple(op, a, b));
+      if (found == numbering_.end()) return std::nullopt;
+      return found->second;
+    };
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      for (std::size_t j = i + 1; j < values.size(); ++j) {
+        const Signed a = values[i], b = values[j];
+        std::optional<Signed> sum;
+        if (a.negative == b.negative) {
+          if (const auto v = made(TapeOp::add, a.value, b.value)) sum = Signed{*v, a.negative};
+        } else if (const auto v = made(TapeOp::sub, a.value, b.value)) {
+          sum = Signed{*v, a.negative};  // ±(a − b)
+        } else if (const auto w = made(TapeOp::sub, b.value, a.value)) {
+          sum = Signed{*w, b.negative};  // ±(b − a)
+        }
+        if (!sum) continue;
+        values[i] = *sum;
+        values.erase(values.begin() + static_cast<std::ptrdiff_t>(j));
+        return true;
+      }
+    }
+    return false;
   }
 
   // Product: coefficient × (numerator factors) / (denominator factors).

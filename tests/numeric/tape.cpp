@@ -354,6 +354,19 @@ TEST(Tape, ProductsReuseMadePairs) {
   EXPECT_EQ(out[1], 30.0);
 }
 
+// A sum likewise reuses sums and differences of two of its terms made already: y − z and x + w,
+// then x + y − z + w as (y − z) + (x + w) — three instructions, where a fold in one order shares
+// at most one of the two.
+TEST(Tape, SumsReuseMadePairs) {
+  const Symbols s;
+  const ex x = s.x, y = s.y, z = s.z, w = s.w;
+  const Tape tape = Tape::compile({y - z, x + w, x + y - z + w, -(x + y - z + w)}, s.all());
+  EXPECT_EQ(tape.instruction_count(), 4u) << tape.listing();  // and one negation
+  const std::vector<double> out = tape.evaluate(std::vector<double>{2.0, 3.0, 5.0, 7.0});
+  EXPECT_EQ(out[2], 2.0 + 3.0 - 5.0 + 7.0);
+  EXPECT_EQ(out[3], -out[2]);
+}
+
 // sin and cos of one argument are one sincos instruction.
 TEST(Tape, SinAndCosOfOneArgumentShareOneInstruction) {
   const Symbols s;
