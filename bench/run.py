@@ -426,11 +426,21 @@ def operations(code):
         if len(fields) != 2 or not fields[0].startswith("r"):
             continue
         value = fields[1]
-        if value.split("[")[0] in ("q", "qd", "p", "t") or value.lstrip("-").replace(".", "", 1)\
-                .replace("e-", "", 1).replace("e+", "", 1).isdigit():
+        if value.split("[")[0] in ("q", "qd", "p", "t") or is_literal(value):
             continue
         count += 1
     return count
+
+
+def is_literal(text):
+    """Whether text is a number as `derive --format c` writes one (decimal or hexadecimal)."""
+    for parse in (float, float.fromhex):
+        try:
+            parse(text)
+            return True
+        except ValueError:
+            pass
+    return False
 
 
 def machine():
