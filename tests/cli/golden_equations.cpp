@@ -82,6 +82,10 @@ TEST(GoldenEquations, RandomLayoutsGiveTheSameText) {
 // writes with either sign of a sum by the layout; its text is still one (too long for a golden
 // file: 400 kB).
 TEST(GoldenEquations, TheBicycleInAnyLayout) {
+#if defined(__SANITIZE_ADDRESS__)
+  // (a question of layout, not of memory: 80 s under the sanitizers, which run every other test)
+  GTEST_SKIP() << "the bicycle's text in two layouts is compared in the plain build";
+#endif
   const Outcome fixed = run("derive bicycle");
   ASSERT_EQ(fixed.status, 0) << fixed.err;
   ASSERT_GT(fixed.out.size(), 100000u);
