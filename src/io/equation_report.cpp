@@ -22,33 +22,35 @@ Expr constraint_terms(const System& system, const EquationsOfMotion& eq, std::si
   return sum;
 }
 
-// One Lagrange row as (left side Σ M q̈, right side f + Σ λ a), each M_ij and each coefficient of
-// a product of rates and multipliers on the right simplified by itself (the whole row at once
-// took half a minute on the bicycle).
-std::pair<Expr, Expr> lagrange_row(const System& system, const EquationsOfMotion& eq,
-                                   std::size_t i) {
-  const auto& q = system.coordinates();
-  std::vector<Expr> left, right, symbols;
-  for (std::size_t j = 0; j < q.size(); ++j) {
-    left.push_back(simplify(eq.mass_matrix(i, j)) * q[j].acceleration);
-    symbols.push_back(q[j].rate);
-  }
-  for (const auto& c : system.constraints) symbols.push_back(c.multiplier);
-  const Expr f = eq.forcing[i] + constraint_terms(system, eq, i);
-  for (const GroupedTerm& t : group_by_monomials(f, symbols, simplify)) {
-    right.push_back(t.coefficient * t.monomial);
-  }
-  return {sum_of(left), sum_of(right)};
-}
-
-// T as Σ over the products of rates, each coefficient simplified by itself.
-Expr kinetic_energy(const System& system, const EquationsOfMotion& eq) {
-  std::vector<Expr> rates, terms;
-  for (const auto& q : system.coordinates()) rates.push_back(q.rate);
-  for (const GroupedTerm& t : group_by_monomials(eq.kinetic_energy, rates, simplify)) {
+// Σ c_k m_k over the monomials m_k in `symbols`, each coefficient c_k simplified by itself (an
+// expression as a whole took half a minute on the bicycle).
+Expr simplified_by_monomials(const Expr& e, const std::vector<Expr>& symbols) {
+  std::vector<Expr> terms;
+  for (const GroupedTerm& t : group_by_monomials(e, symbols, simplify)) {
     terms.push_back(t.coefficient * t.monomial);
   }
   return sum_of(terms);
+}
+
+std::vector<Expr> rates(const System& system) {
+  std::vector<Expr> symbols;
+  for (const auto& q : system.coordinates()) symbols.push_back(q.rate);
+  return symbols;
+}
+
+// One Lagrange row as (left side Σ M q̈, right side f + Σ λ a): each M_ij simplified, and each
+// coefficient of a product of rates and multipliers on the right.
+std::pair<Expr, Expr> lagrange_row(const System& system, const EquationsOfMotion& eq,
+                                   std::size_t i) {
+  const auto& q = system.coordinates();
+  std::vector<Expr> left;
+  for (std::size_t j = 0; j < q.size(); ++j) {
+    left.push_back(simplify(eq.mass_matrix(i, j)) * q[j].acceleration);
+  }
+  std::vector<Expr> symbols = rates(system);
+  for (const auto& c : system.constraints) symbols.push_back(c.multiplier);
+  return {sum_of(left),
+          simplified_by_monomials(eq.forcing[i] + constraint_terms(system, eq, i), symbols)};
 }
 
 // A vector as "[x, y, z]" in text or LaTeX.
@@ -100,7 +102,8 @@ void write_lagrange(std::ostream& out, const System& system, const EquationsOfMo
       out << "  " << to_latex(simplify(c.expression)) << " &= 0"
           << (c.kind == Constraint::Kind::velocity ? " \\quad\\text{(velocity)}" : "") << " \\\\\n";
     }
-    out << "  T &= " << to_latex(kinetic_energy(system, eq)) << " \\\\\n";
+    out << "  T &= " << to_latex(simplified_by_monomials(eq.kinetic_energy, rates(system)))
+        << " \\\\\n";
     out << "  U &= " << to_latex(simplify(eq.potential_energy)) << "\n\\end{aligned}\n\\]\n";
     return;
   }
@@ -108,7 +111,8 @@ void write_lagrange(std::ostream& out, const System& system, const EquationsOfMo
   out << system.name << ": Lagrange's equations"
       << (constraints.empty() ? "" : ", M q'' = f + A^T lambda (one multiplier per constraint)")
       << "\n";
-  out << "  T = " << render(kinetic_energy(system, eq), format) << "\n";
+  out << "  T = " << render(simplified_by_monomials(eq.kinetic_energy, rates(system)), format)
+      << "\n";
   out << "  U = " << render(simplify(eq.potential_energy), format) << "\n";
   for (std::size_t i = 0; i < q.size(); ++i) {
     const auto [lhs, rhs] = lagrange_row(system, eq, i);

@@ -400,7 +400,7 @@ class Builder {
     if (!c.is_real()) fail("complex number " + str(c) + " in", e);
     const Signed number = compile_numeric(c);
     const Value magnitude =
-        constants_[number.value.index] == 1.0 ? v.value : emit(TapeOp::mul, number.value, v.value);
+        GiNaC::abs(c).is_equal(1) ? v.value : emit(TapeOp::mul, number.value, v.value);
     return {magnitude, v.negative != number.negative};
   }
 
