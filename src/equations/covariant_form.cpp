@@ -1,6 +1,7 @@
 // The covariant form of Lagrange's equations: convective terms by Christoffel symbols.
 #include "unidyn/equations/covariant_form.hpp"
 
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/zero_test.hpp"
 
 namespace unidyn {
@@ -16,7 +17,7 @@ RateFreeParts rate_free_parts(const System& system, const Expr& T) {
   GiNaC::exmap at_rest;
   for (const auto& c : system.coordinates()) at_rest[c.rate] = 0;
   RateFreeParts parts;
-  for (const auto& c : system.coordinates()) parts.b.push_back(T.diff(c.rate).subs(at_rest));
+  for (const auto& c : system.coordinates()) parts.b.push_back(derivative(T, c.rate).subs(at_rest));
   parts.T0 = T.subs(at_rest);
   return parts;
 }
@@ -35,21 +36,23 @@ std::vector<std::optional<Expr>> covariant_convective_terms(const System& system
     Expr c = 0;
     for (std::size_t K = 0; K < n; ++K) {
       // (4.25): the Christoffel symbols of the first kind, [KS, R] + [SK, R] for K < S
-      const Expr diagonal = M(R, K).diff(q[K].value) - M(K, K).diff(q[R].value) / 2;  // [KK, R]
+      const Expr diagonal =
+          derivative(M(R, K), q[K].value) - derivative(M(K, K), q[R].value) / 2;  // [KK, R]
       c += diagonal * q[K].rate * q[K].rate;
       for (std::size_t S = K + 1; S < n; ++S) {
-        const Expr symbol =
-            M(R, K).diff(q[S].value) + M(R, S).diff(q[K].value) - M(K, S).diff(q[R].value);
+        const Expr symbol = derivative(M(R, K), q[S].value) + derivative(M(R, S), q[K].value) -
+                            derivative(M(K, S), q[R].value);
         c += symbol * q[K].rate * q[S].rate;
       }
       // the rheonomic and gyroscopic terms, linear in the rates
-      const Expr g = M(R, K).diff(t) + parts.b[R].diff(q[K].value) - parts.b[K].diff(q[R].value);
+      const Expr g = derivative(M(R, K), t) + derivative(parts.b[R], q[K].value) -
+                     derivative(parts.b[K], q[R].value);
       c += g * q[K].rate;
     }
-    c += parts.b[R].diff(t) - parts.T0.diff(q[R].value);
+    c += derivative(parts.b[R], t) - derivative(parts.T0, q[R].value);
     // the derived row's convective part: f_R = Φ_R − ∂U/∂q^R − c_R
     const Expr derived =
-        eq.generalized_force[R] - eq.potential_energy.diff(q[R].value) - eq.forcing[R];
+        eq.generalized_force[R] - derivative(eq.potential_energy, q[R].value) - eq.forcing[R];
     rows.push_back(vanishes_identically(derived - c) == std::optional<bool>(true)
                        ? std::optional<Expr>(c)
                        : std::nullopt);

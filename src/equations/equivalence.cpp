@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 #include "unidyn/symbolic/zero_test.hpp"
@@ -29,7 +30,8 @@ EquivalenceReport check_equivalence(const System& system, const EquationsOfMotio
   const GiNaC::exmap parameters = system.parameter_values();
   const auto& q = system.coordinates();
   std::vector<Expr> potential_gradient;
-  for (const auto& c : q) potential_gradient.push_back(lagrange.potential_energy.diff(c.value));
+  for (const auto& c : q)
+    potential_gradient.push_back(derivative(lagrange.potential_energy, c.value));
   std::vector<GiNaC::exmap> points;
   for (int s = 0; s < states; ++s) {
     GiNaC::exmap state = parameters;

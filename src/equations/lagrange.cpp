@@ -1,5 +1,6 @@
 // Lagrange's equations, approach I.
 #include "unidyn/equations/lagrange.hpp"
+#include "unidyn/symbolic/derivative.hpp"
 
 namespace unidyn {
 
@@ -49,7 +50,8 @@ void constraint_rows(const System& system, EquationsOfMotion& eq) {
     } else {
       velocity_form = c.expression;
     }
-    for (std::size_t j = 0; j < n; ++j) eq.constraint_matrix(k, j) = velocity_form.diff(q[j].rate);
+    for (std::size_t j = 0; j < n; ++j)
+      eq.constraint_matrix(k, j) = derivative(velocity_form, q[j].rate);
     eq.constraint_velocity_term[k] = velocity_form.subs(no_rate);
     eq.constraint_bias[k] = config.convective_derivative(velocity_form);  // at q̈ = 0
   }
@@ -76,7 +78,8 @@ void finish_equations(const System& system, const std::vector<Expr>& convective,
     Expr inertia = convective[i];
     for (std::size_t j = 0; j < n; ++j) inertia += eq.mass_matrix(i, j) * q[j].acceleration;
     eq.inertia_terms[i] = inertia;
-    eq.forcing[i] = eq.generalized_force[i] - eq.potential_energy.diff(q[i].value) - convective[i];
+    eq.forcing[i] =
+        eq.generalized_force[i] - derivative(eq.potential_energy, q[i].value) - convective[i];
   }
   constraint_rows(system, eq);
 }
@@ -91,12 +94,13 @@ EquationsOfMotion lagrange_equations(const System& system) {
   // convective part ṗ_i⁰ = ∂p_i/∂t + Σ_j ∂p_i/∂q^j q̇^j, and c_i = ṗ_i⁰ − ∂T/∂q^i.
   std::vector<Expr> convective(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    const Expr momentum = eq.kinetic_energy.diff(q[i].rate);
+    const Expr momentum = derivative(eq.kinetic_energy, q[i].rate);
     for (std::size_t j = i; j < n; ++j) {
-      eq.mass_matrix(i, j) = momentum.diff(q[j].rate);
+      eq.mass_matrix(i, j) = derivative(momentum, q[j].rate);
       eq.mass_matrix(j, i) = eq.mass_matrix(i, j);
     }
-    convective[i] = config.convective_derivative(momentum) - eq.kinetic_energy.diff(q[i].value);
+    convective[i] =
+        config.convective_derivative(momentum) - derivative(eq.kinetic_energy, q[i].value);
   }
   finish_equations(system, convective, eq);
   return eq;

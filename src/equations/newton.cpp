@@ -1,5 +1,6 @@
 // Newton's law per particle and its projection onto Lagrange's equations.
 #include "unidyn/equations/newton.hpp"
+#include "unidyn/symbolic/derivative.hpp"
 
 namespace unidyn {
 
@@ -35,7 +36,7 @@ NewtonEquations newton_equations(const System& system) {
     }
     if (element.kind == ForceElement::Kind::potential) {
       for (std::size_t i = 0; i < q.size(); ++i) {
-        newton.coordinate_potential_force[i] -= element.potential.diff(q[i].value);
+        newton.coordinate_potential_force[i] -= derivative(element.potential, q[i].value);
       }
     }
   }
@@ -62,7 +63,7 @@ std::vector<Expr> equivalence_residual(const System& system, const NewtonEquatio
     }
     // Lagrange's row i without the constraint forces
     const Expr lagrange_row = lagrange.inertia_terms[i] +
-                              lagrange.potential_energy.diff(q[i].value) -
+                              derivative(lagrange.potential_energy, q[i].value) -
                               lagrange.generalized_force[i];
     residual[i] = projected - lagrange_row;
   }

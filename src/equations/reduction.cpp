@@ -2,6 +2,7 @@
 #include "unidyn/equations/reduction.hpp"
 
 #include <optional>
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 
 namespace unidyn {
@@ -12,7 +13,7 @@ namespace {
 std::optional<std::size_t> solvable_coordinate(const System& system, const Expr& psi) {
   const auto& q = system.coordinates();
   for (std::size_t k = 0; k < q.size(); ++k) {
-    const Expr a = psi.diff(q[k].value);
+    const Expr a = derivative(psi, q[k].value);
     if (a.is_zero()) continue;
     bool free = true;
     for (const auto& c : q) free = free && !a.has(c.value) && !a.has(c.rate);
@@ -60,7 +61,8 @@ Reduction eliminate_constraints(const System& full) {
       // q^k = q^k − Ψ / (∂Ψ/∂q^k), its rate and acceleration by the total derivative
       const CoordinateSymbols coordinate = system.coordinates()[*k];
       const Expr solution = normal_within_budget(
-          coordinate.value - constraint.expression / constraint.expression.diff(coordinate.value),
+          coordinate.value -
+              constraint.expression / derivative(constraint.expression, coordinate.value),
           "approach II");
       GiNaC::exmap map{{coordinate.value, solution}};
       const Expr rate = system.configuration.total_derivative(solution);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "format.hpp"
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {
@@ -73,8 +74,8 @@ void apply_initial_angular_velocities(const System& system, SimulationStart& sta
     Eigen::Vector3d target;
     for (int i = 0; i < 3; ++i) {
       for (Eigen::Index j = 0; j < n; ++j) {
-        W(i, j) =
-            value(w[i].diff(q[given.coordinates[static_cast<std::size_t>(j)]].rate), body.name);
+        W(i, j) = value(derivative(w[i], q[given.coordinates[static_cast<std::size_t>(j)]].rate),
+                        body.name);
       }
       target[i] = value(given.omega[i], body.name) - value(w[i], body.name);
     }

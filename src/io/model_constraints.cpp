@@ -1,6 +1,7 @@
 // The model file's constraints: position and velocity constraints, unilateral contacts, friction,
 // joints (ball, pin) and rolling.
 #include "model_reader.hpp"
+#include "unidyn/symbolic/derivative.hpp"
 
 namespace unidyn::model_reading {
 
@@ -92,7 +93,7 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
       c.expression = scalar_expr(spec["velocity"], scope, "velocity");
       expect_state_only(spec["velocity"], c.expression, system, "a velocity constraint", true);
       for (const auto& q : system.coordinates()) {
-        if (!c.expression.diff(q.rate, 2).is_zero()) {
+        if (!derivative(derivative(c.expression, q.rate), q.rate).is_zero()) {
           fail(spec["velocity"],
                "a velocity constraint must be linear in the rates; it is not in der(" + q.name +
                    ")");

@@ -6,6 +6,7 @@
 #include "unidyn/equations/covariant_form.hpp"
 #include "unidyn/io/phase_timings.hpp"
 #include "unidyn/symbolic/common_subexpressions.hpp"
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/textbook_form.hpp"
 #include "unidyn/symbolic/zero_test.hpp"
@@ -109,7 +110,7 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
     // −f_i = c_i + ∂U/∂q^i − Φ_i
     const Expr minus_forcing =
         convective[i]
-            ? *convective[i] + eq.potential_energy.diff(q[i].value) - eq.generalized_force[i]
+            ? *convective[i] + derivative(eq.potential_energy, q[i].value) - eq.generalized_force[i]
             : -eq.forcing[i];
     for (GroupedTerm& t : group_by_monomials(minus_forcing, rates)) left[i].push_back(t);
     Expr sum = 0;

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
@@ -65,8 +66,8 @@ std::vector<Expr> constraint_row(const System& system, std::size_t k) {
   const Constraint& c = system.constraints.at(k);
   std::vector<Expr> row;
   for (const auto& q : system.coordinates()) {
-    row.push_back(c.kind == Constraint::Kind::position ? c.expression.diff(q.value)
-                                                       : c.expression.diff(q.rate));
+    row.push_back(c.kind == Constraint::Kind::position ? derivative(c.expression, q.value)
+                                                       : derivative(c.expression, q.rate));
   }
   return row;
 }

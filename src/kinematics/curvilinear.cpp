@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
@@ -56,11 +57,11 @@ std::vector<std::vector<std::vector<Expr>>> christoffel_first_kind(const ExprMat
     for (std::size_t j = 0; j < n; ++j) {
       for (std::size_t k = 0; k < n; ++k) {
         // [ij, k] = ½ (∂a_ik/∂q^j + ∂a_jk/∂q^i − ∂a_ij/∂q^k)
-        symbol[i][j][k] =
-            normal_within_budget((a(i, k).diff(as_symbol(q[j])) + a(j, k).diff(as_symbol(q[i])) -
-                                  a(i, j).diff(as_symbol(q[k]))) /
-                                     2,
-                                 "the Christoffel symbols");
+        symbol[i][j][k] = normal_within_budget(
+            (derivative(a(i, k), as_symbol(q[j])) + derivative(a(j, k), as_symbol(q[i])) -
+             derivative(a(i, j), as_symbol(q[k]))) /
+                2,
+            "the Christoffel symbols");
       }
     }
   }

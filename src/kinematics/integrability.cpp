@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
@@ -36,7 +37,7 @@ std::vector<Expr> pfaffian(const System& system, std::size_t k) {
   std::vector<Expr> W;
   GiNaC::exmap at_rest;
   for (const auto& q : system.coordinates()) {
-    W.push_back(form.diff(q.rate));
+    W.push_back(derivative(form, q.rate));
     at_rest[q.rate] = 0;
   }
   W.push_back(form.subs(at_rest));
@@ -45,8 +46,8 @@ std::vector<Expr> pfaffian(const System& system, std::size_t k) {
 
 // S_LK = ∂W_L/∂U^K − ∂W_K/∂U^L
 Expr S(const std::vector<Expr>& W, const Variables& v, std::size_t L, std::size_t K) {
-  return W[L].diff(GiNaC::ex_to<GiNaC::symbol>(v.U[K])) -
-         W[K].diff(GiNaC::ex_to<GiNaC::symbol>(v.U[L]));
+  return derivative(W[L], GiNaC::ex_to<GiNaC::symbol>(v.U[K])) -
+         derivative(W[K], GiNaC::ex_to<GiNaC::symbol>(v.U[L]));
 }
 
 // A basis of ker W (rows W_A) scaled free of denominators: pick R pivot columns with a non-zero

@@ -1,5 +1,6 @@
 // Force elements: potentials and particle forces.
 #include "unidyn/model/forces.hpp"
+#include "unidyn/symbolic/derivative.hpp"
 
 namespace unidyn {
 namespace {
@@ -46,7 +47,7 @@ ForceElement spring(const ForcePoint& from, const ForcePoint& to, const Expr& re
   const Expr s = length - rest_length;
   const VectorExpr e = d / length;
   // U'(s) at the current stretch
-  const Expr tension = energy.diff(stretch).subs(GiNaC::lst{stretch}, GiNaC::lst{s});
+  const Expr tension = derivative(energy, stretch).subs(GiNaC::lst{stretch}, GiNaC::lst{s});
   element.potential = energy.subs(GiNaC::lst{stretch}, GiNaC::lst{s});
   push_force(element, to, -tension * e);
   push_force(element, from, tension * e);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
@@ -33,7 +34,8 @@ std::string obstacle(const System& system, const EquationsOfMotion& eq) {
   for (const auto& c : q) at_rest[c.rate] = 0;
   if (!vanishes(eq.kinetic_energy.subs(at_rest))) return "T0 (T at rest is not 0)";
   for (const auto& c : q) {
-    if (!vanishes(eq.kinetic_energy.diff(c.rate).subs(at_rest))) return "T1 (gyroscopic terms)";
+    if (!vanishes(derivative(eq.kinetic_energy, c.rate).subs(at_rest)))
+      return "T1 (gyroscopic terms)";
   }
   for (const Expr& mij : eq.mass_matrix.data) {
     for (const auto& c : q) {
@@ -66,13 +68,13 @@ CompiledNaturalSystem::CompiledNaturalSystem(const System& system, const Equatio
   mass_ = Tape::compile(eq.mass_matrix.data, inputs_of(system));
   std::vector<Expr> outputs;
   const Expr lagrangian = eq.kinetic_energy - eq.potential_energy;
-  for (const auto& c : q) outputs.push_back(lagrangian.diff(c.value));
+  for (const auto& c : q) outputs.push_back(derivative(lagrangian, c.value));
   gradient_ = Tape::compile(outputs, inputs_of(system));
   // Ψ and G = ∂Ψ/∂q
   outputs.clear();
   for (const Constraint& c : system.constraints) outputs.push_back(c.expression);
   for (const Constraint& c : system.constraints) {
-    for (const auto& coordinate : q) outputs.push_back(c.expression.diff(coordinate.value));
+    for (const auto& coordinate : q) outputs.push_back(derivative(c.expression, coordinate.value));
   }
   constraints_ = Tape::compile(outputs, inputs_of(system));
 }

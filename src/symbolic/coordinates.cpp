@@ -1,5 +1,6 @@
 // Coordinate symbols and the total time derivative.
 #include "unidyn/symbolic/coordinates.hpp"
+#include "unidyn/symbolic/derivative.hpp"
 
 #include <cctype>
 
@@ -70,16 +71,16 @@ Configuration Configuration::without(std::size_t k) const {
 
 Expr Configuration::total_derivative(const Expr& f) const {
   // (1.8) ḟ = ∂f/∂t + Σ ∂f/∂q q̇ + Σ ∂f/∂q̇ q̈
-  Expr result = f.diff(time_);
+  Expr result = derivative(f, time_);
   for (const auto& q : coordinates_) {
-    result += f.diff(q.value) * q.rate + f.diff(q.rate) * q.acceleration;
+    result += derivative(f, q.value) * q.rate + derivative(f, q.rate) * q.acceleration;
   }
   return result;
 }
 
 Expr Configuration::convective_derivative(const Expr& f) const {
-  Expr result = f.diff(time_);
-  for (const auto& q : coordinates_) result += f.diff(q.value) * q.rate;
+  Expr result = derivative(f, time_);
+  for (const auto& q : coordinates_) result += derivative(f, q.value) * q.rate;
   return result;
 }
 

@@ -1,6 +1,7 @@
 // Symbolic vectors and model-file positions.
 #include "unidyn/symbolic/expression.hpp"
 
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
 
 namespace unidyn {
@@ -42,7 +43,7 @@ Expr norm(const VectorExpr& a) {
 }
 
 VectorExpr diff(const VectorExpr& a, const GiNaC::symbol& x) {
-  return {a[0].diff(x), a[1].diff(x), a[2].diff(x)};
+  return {derivative(a[0], x), derivative(a[1], x), derivative(a[2], x)};
 }
 
 VectorExpr subs(const VectorExpr& a, const GiNaC::exmap& map) {
