@@ -16,8 +16,10 @@ struct RateFreeParts {
 RateFreeParts rate_free_parts(const System& system, const Expr& T) {
   GiNaC::exmap at_rest;
   for (const auto& c : system.coordinates()) at_rest[c.rate] = 0;
+  std::vector<Expr> rates;
+  for (const auto& c : system.coordinates()) rates.push_back(c.rate);
   RateFreeParts parts;
-  for (const auto& c : system.coordinates()) parts.b.push_back(derivative(T, c.rate).subs(at_rest));
+  for (const Expr& p : gradient(T, rates)) parts.b.push_back(p.subs(at_rest));
   parts.T0 = T.subs(at_rest);
   return parts;
 }
@@ -31,25 +33,32 @@ std::vector<std::optional<Expr>> covariant_convective_terms(const System& system
   const std::size_t n = q.size();
   const GiNaC::symbol& t = system.time();
   const RateFreeParts parts = rate_free_parts(system, eq.kinetic_energy);
+  // ∂M_ij/∂(q^1, …, q^n, t) and ∂b_i/∂(q^1, …, q^n, t), each entry walked through once
+  std::vector<Expr> x;
+  for (const auto& c : q) x.push_back(c.value);
+  x.push_back(t);
+  std::vector<std::vector<std::vector<Expr>>> dM(n, std::vector<std::vector<Expr>>(n));
+  std::vector<std::vector<Expr>> db(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) dM[i][j] = gradient(M(i, j), x);
+    db[i] = gradient(parts.b[i], x);
+  }
   std::vector<std::optional<Expr>> rows;
   for (std::size_t R = 0; R < n; ++R) {
     Expr c = 0;
     for (std::size_t K = 0; K < n; ++K) {
       // (4.25): the Christoffel symbols of the first kind, [KS, R] + [SK, R] for K < S
-      const Expr diagonal =
-          derivative(M(R, K), q[K].value) - derivative(M(K, K), q[R].value) / 2;  // [KK, R]
+      const Expr diagonal = dM[R][K][K] - dM[K][K][R] / 2;  // [KK, R]
       c += diagonal * q[K].rate * q[K].rate;
       for (std::size_t S = K + 1; S < n; ++S) {
-        const Expr symbol = derivative(M(R, K), q[S].value) + derivative(M(R, S), q[K].value) -
-                            derivative(M(K, S), q[R].value);
+        const Expr symbol = dM[R][K][S] + dM[R][S][K] - dM[K][S][R];
         c += symbol * q[K].rate * q[S].rate;
       }
       // the rheonomic and gyroscopic terms, linear in the rates
-      const Expr g = derivative(M(R, K), t) + derivative(parts.b[R], q[K].value) -
-                     derivative(parts.b[K], q[R].value);
+      const Expr g = dM[R][K][n] + db[R][K] - db[K][R];
       c += g * q[K].rate;
     }
-    c += derivative(parts.b[R], t) - derivative(parts.T0, q[R].value);
+    c += db[R][n] - derivative(parts.T0, q[R].value);
     // the derived row's convective part: f_R = Φ_R − ∂U/∂q^R − c_R
     const Expr derived =
         eq.generalized_force[R] - derivative(eq.potential_energy, q[R].value) - eq.forcing[R];

@@ -71,16 +71,25 @@ Configuration Configuration::without(std::size_t k) const {
 
 Expr Configuration::total_derivative(const Expr& f) const {
   // (1.8) ḟ = ∂f/∂t + Σ ∂f/∂q q̇ + Σ ∂f/∂q̇ q̈
-  Expr result = derivative(f, time_);
+  std::vector<Expr> x{time_};
   for (const auto& q : coordinates_) {
-    result += derivative(f, q.value) * q.rate + derivative(f, q.rate) * q.acceleration;
+    x.push_back(q.value);
+    x.push_back(q.rate);
+  }
+  const std::vector<Expr> g = gradient(f, x);
+  Expr result = g[0];
+  for (std::size_t k = 0; k < coordinates_.size(); ++k) {
+    result += g[1 + 2 * k] * coordinates_[k].rate + g[2 + 2 * k] * coordinates_[k].acceleration;
   }
   return result;
 }
 
 Expr Configuration::convective_derivative(const Expr& f) const {
-  Expr result = derivative(f, time_);
-  for (const auto& q : coordinates_) result += derivative(f, q.value) * q.rate;
+  std::vector<Expr> x{time_};
+  for (const auto& q : coordinates_) x.push_back(q.value);
+  const std::vector<Expr> g = gradient(f, x);
+  Expr result = g[0];
+  for (std::size_t k = 0; k < coordinates_.size(); ++k) result += g[1 + k] * coordinates_[k].rate;
   return result;
 }
 

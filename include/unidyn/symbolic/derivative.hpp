@@ -11,4 +11,9 @@ namespace unidyn {
 // 10-link pendulum); anything else by GiNaC.
 Expr derivative(const Expr& e, const GiNaC::symbol& x);
 
+// (∂e/∂x_1, …, ∂e/∂x_n) in one walk through e: what n calls of derivative give, in the time of a
+// few.
+// (each x_k a symbol)
+std::vector<Expr> gradient(const Expr& e, const std::vector<Expr>& xs);
+
 }  // namespace unidyn
