@@ -92,15 +92,22 @@ EquationsOfMotion lagrange_equations(const System& system) {
   // Row i: d/dt(∂T/∂q̇^i) − ∂T/∂q^i + ∂U/∂q^i − Φ_i, linear in q̈. With p_i = ∂T/∂q̇^i:
   // M_ij = ∂p_i/∂q̇^j (symmetric: each pair once), d/dt p_i = Σ_j M_ij q̈^j + ṗ_i⁰ with the
   // convective part ṗ_i⁰ = ∂p_i/∂t + Σ_j ∂p_i/∂q^j q̇^j, and c_i = ṗ_i⁰ − ∂T/∂q^i.
+  // ∂T/∂q̇^i and ∂T/∂q^i in one walk through T, M_ij of each p_i in one walk through p_i
+  std::vector<Expr> rates, x;
+  for (const auto& c : q) rates.push_back(c.rate);
+  for (const auto& c : q) x.push_back(c.value);
+  x.insert(x.end(), rates.begin(), rates.end());
+  const std::vector<Expr> dT = gradient(eq.kinetic_energy, x);
   std::vector<Expr> convective(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    const Expr momentum = derivative(eq.kinetic_energy, q[i].rate);
+    const Expr& momentum = dT[n + i];
+    const std::vector<Expr> dp = gradient(
+        momentum, std::vector<Expr>(rates.begin() + static_cast<std::ptrdiff_t>(i), rates.end()));
     for (std::size_t j = i; j < n; ++j) {
-      eq.mass_matrix(i, j) = derivative(momentum, q[j].rate);
+      eq.mass_matrix(i, j) = dp[j - i];
       eq.mass_matrix(j, i) = eq.mass_matrix(i, j);
     }
-    convective[i] =
-        config.convective_derivative(momentum) - derivative(eq.kinetic_energy, q[i].value);
+    convective[i] = config.convective_derivative(momentum) - dT[i];
   }
   finish_equations(system, convective, eq);
   return eq;

@@ -3,6 +3,7 @@
 
 #include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
+#include "unidyn/symbolic/polynomial_degrees.hpp"
 #include "unidyn/symbolic/trig_identities.hpp"
 
 #include <algorithm>
@@ -38,14 +39,22 @@ using UnitCircles = std::vector<std::pair<GiNaC::symbol, GiNaC::symbol>>;
 // pair in whose v p is not a polynomial is left as it is.
 Expr reduce_modulo_unit_circles(const Expr& p, const UnitCircles& pairs) {
   UnitCircles reduced;
-  for (const auto& pair : pairs) {
-    if (p.is_polynomial(pair.first) && p.degree(pair.first) >= 2) reduced.push_back(pair);
+  std::vector<Expr> vs;
+  for (const auto& pair : pairs) vs.push_back(pair.first);
+  const std::vector<std::optional<int>> degrees = polynomial_degrees(p, vs);
+  vs.clear();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (degrees[k].value_or(0) < 2) continue;
+    reduced.push_back(pairs[k]);
+    vs.push_back(pairs[k].first);
   }
   if (reduced.empty()) return p;
-  const auto reduce_term = [&reduced](const Expr& term) {
+  const auto reduce_term = [&reduced, &vs](const Expr& term) {
     Expr result = term;
-    for (const auto& [v, w] : reduced) {
-      const int k = term.degree(v);
+    const std::vector<std::optional<int>> term_degrees = polynomial_degrees(term, vs);
+    for (std::size_t i = 0; i < reduced.size(); ++i) {
+      const auto& [v, w] = reduced[i];
+      const int k = term_degrees[i].value_or(0);
       if (k < 2) continue;
       result = result / GiNaC::pow(v, k - k % 2) * GiNaC::pow(1 - GiNaC::pow(w, 2), k / 2);
     }
@@ -200,15 +209,18 @@ Expr simplify_uncached(const Expr& e) {
   // the arguments whose sine or cosine is squared somewhere: only these are reduced (for the
   // others either way leaves the polynomials as they are), so a choice that differs from an
   // earlier one only in the others gives what that one gave and is skipped
-  const auto squared = [](const Expr& p, const GiNaC::symbol& v) {
-    return p.is_polynomial(v) && p.degree(v) >= 2;
+  std::vector<Expr> sines_and_cosines(s.begin(), s.end());
+  sines_and_cosines.insert(sines_and_cosines.end(), c.begin(), c.end());
+  const auto in_numerator = polynomial_degrees(numerator, sines_and_cosines),
+             in_denominator = polynomial_degrees(denominator, sines_and_cosines);
+  const auto squared = [&](std::size_t k) {
+    return in_numerator[k].value_or(0) >= 2 || in_denominator[k].value_or(0) >= 2;
   };
   std::vector<bool> reduced_argument(n);
   std::size_t idle = 0;  // the mask of the others (up to four arguments: a bit each)
   bool any = false;
   for (std::size_t i = 0; i < n; ++i) {
-    reduced_argument[i] = squared(numerator, s[i]) || squared(numerator, c[i]) ||
-                          squared(denominator, s[i]) || squared(denominator, c[i]);
+    reduced_argument[i] = squared(i) || squared(n + i);
     any = any || reduced_argument[i];
     if (!reduced_argument[i] && n <= 4) idle |= std::size_t{1} << i;
   }

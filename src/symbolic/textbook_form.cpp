@@ -10,6 +10,7 @@
 #include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/common_factor.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
+#include "unidyn/symbolic/polynomial_degrees.hpp"
 #include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/trig_identities.hpp"
 
@@ -114,10 +115,11 @@ std::vector<GroupedTerm> group_by_monomials(const Expr& e, const std::vector<Exp
   const auto add_term = [&](const Expr& term) {
     std::vector<int> exponents;
     Expr monomial = 1;
-    for (const Expr& s : symbols) {
-      const int d = term.is_polynomial(s) ? term.degree(s) : 0;
+    const std::vector<std::optional<int>> degrees = polynomial_degrees(term, symbols);
+    for (std::size_t k = 0; k < symbols.size(); ++k) {
+      const int d = degrees[k].value_or(0);
       exponents.push_back(d);
-      monomial *= GiNaC::pow(s, d);
+      if (d != 0) monomial *= GiNaC::pow(symbols[k], d);
     }
     groups[exponents].push_back(term / monomial);
   };

@@ -1,0 +1,64 @@
+// The degrees of an expression in several symbols in one walk.
+#include "unidyn/symbolic/polynomial_degrees.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+
+namespace unidyn {
+
+using GiNaC::is_exactly_a;
+
+std::vector<std::optional<int>> polynomial_degrees(const Expr& p, const std::vector<Expr>& xs) {
+  struct Hash {
+    std::size_t operator()(const Expr& x) const { return x.gethash(); }
+  };
+  std::unordered_map<Expr, std::size_t, Hash, GiNaC::ex_is_equal> index;
+  for (std::size_t k = 0; k < xs.size(); ++k) index.emplace(xs[k], k);
+  std::vector<int> degree(xs.size(), 0);
+  std::vector<bool> polynomial(xs.size(), true);
+  std::vector<int> term_degree(xs.size());
+  // the degree of a sum: the highest of its terms'; of a product: the sum of its factors'
+  const auto add_term = [&](const Expr& term) {
+    std::fill(term_degree.begin(), term_degree.end(), 0);
+    const auto add_factor = [&](const Expr& f) {
+      if (is_exactly_a<GiNaC::numeric>(f)) return;
+      // x or x^n, n an integer
+      const bool power = is_exactly_a<GiNaC::power>(f);
+      const Expr base = power ? f.op(0) : f;
+      if (const auto found = index.find(base);
+          found != index.end() && (!power || f.op(1).info(GiNaC::info_flags::integer))) {
+        const int n = power ? static_cast<int>(GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_int()) : 1;
+        if (n < 0) polynomial[found->second] = false;
+        term_degree[found->second] += n;
+        return;
+      }
+      // anything else: by GiNaC, for the symbols in it
+      for (std::size_t k = 0; k < xs.size(); ++k) {
+        if (!polynomial[k] || !f.has(xs[k])) continue;
+        if (f.is_polynomial(xs[k])) {
+          term_degree[k] += f.degree(xs[k]);
+        } else {
+          polynomial[k] = false;
+        }
+      }
+    };
+    if (is_exactly_a<GiNaC::mul>(term)) {
+      for (std::size_t i = 0; i < term.nops(); ++i) add_factor(term.op(i));
+    } else {
+      add_factor(term);
+    }
+    for (std::size_t k = 0; k < xs.size(); ++k) degree[k] = std::max(degree[k], term_degree[k]);
+  };
+  if (is_exactly_a<GiNaC::add>(p)) {
+    for (std::size_t i = 0; i < p.nops(); ++i) add_term(p.op(i));
+  } else {
+    add_term(p);
+  }
+  std::vector<std::optional<int>> degrees;
+  for (std::size_t k = 0; k < xs.size(); ++k) {
+    degrees.push_back(polynomial[k] ? std::optional<int>(degree[k]) : std::nullopt);
+  }
+  return degrees;
+}
+
+}  // namespace unidyn
