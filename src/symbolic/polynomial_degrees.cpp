@@ -2,6 +2,7 @@
 #include "unidyn/symbolic/polynomial_degrees.hpp"
 
 #include <algorithm>
+#include <set>
 #include <unordered_map>
 
 namespace unidyn {
@@ -17,6 +18,18 @@ std::vector<std::optional<int>> polynomial_degrees(const Expr& p, const std::vec
   std::vector<int> degree(xs.size(), 0);
   std::vector<bool> polynomial(xs.size(), true);
   std::vector<int> term_degree(xs.size());
+  // the indices of the symbols in an expression, once each
+  std::set<std::size_t> present;
+  const auto find_symbols = [&](const Expr& e) {
+    const auto walk = [&](const Expr& x, const auto& self) -> void {
+      if (GiNaC::is_a<GiNaC::symbol>(x)) {
+        if (const auto found = index.find(x); found != index.end()) present.insert(found->second);
+        return;
+      }
+      for (std::size_t i = 0; i < x.nops(); ++i) self(x.op(i), self);
+    };
+    walk(e, walk);
+  };
   // the degree of a sum: the highest of its terms'; of a product: the sum of its factors'
   const auto add_term = [&](const Expr& term) {
     std::fill(term_degree.begin(), term_degree.end(), 0);
@@ -33,8 +46,10 @@ std::vector<std::optional<int>> polynomial_degrees(const Expr& p, const std::vec
         return;
       }
       // anything else: by GiNaC, for the symbols in it
-      for (std::size_t k = 0; k < xs.size(); ++k) {
-        if (!polynomial[k] || !f.has(xs[k])) continue;
+      present.clear();
+      find_symbols(f);
+      for (const std::size_t k : present) {
+        if (!polynomial[k]) continue;
         if (f.is_polynomial(xs[k])) {
           term_degree[k] += f.degree(xs[k]);
         } else {
