@@ -193,71 +193,89 @@ std::optional<Argument> decompose(const Expr& argument) {
   return a;
 }
 
-// The expression at one point, by its nodes (shared nodes once); none where it is undefined or
-// cannot be evaluated exactly.
+// The values of an expression at a batch of points: one per point, and which points it is
+// defined at (not at one where a denominator is 0).
+struct Values {
+  std::vector<std::uint64_t> at;
+  std::vector<bool> defined;
+};
+
+struct ExprHash {
+  std::size_t operator()(const Expr& x) const { return x.gethash(); }
+};
+using PointValues =
+    std::unordered_map<Expr, std::vector<std::uint64_t>, ExprHash, GiNaC::ex_is_equal>;
+
+// The expression at a batch of points, by its nodes (shared nodes once, each visited once for all
+// the points); none where it cannot be evaluated exactly.
 class Evaluator {
  public:
-  Evaluator(const std::map<Expr, std::uint64_t, GiNaC::ex_is_less>& symbols,
-            const std::map<Expr, std::uint64_t, GiNaC::ex_is_less>& functions)
-      : symbols_(symbols), functions_(functions) {}
+  Evaluator(const PointValues& symbols, const PointValues& functions, std::size_t points)
+      : symbols_(symbols), functions_(functions), points_(points) {}
 
-  // whether every failure so far was a division by 0 (and not an expression it cannot evaluate)
-  bool only_undefined() const { return only_undefined_; }
-
-  std::optional<std::uint64_t> operator()(const Expr& e) {
+  std::optional<Values> operator()(const Expr& e) {
     const GiNaC::basic* node = &GiNaC::ex_to<GiNaC::basic>(e);
     if (const auto it = memo_.find(node); it != memo_.end()) return it->second.second;
-    const std::optional<std::uint64_t> value = evaluate(e);
+    std::optional<Values> value = evaluate(e);
     // the node held, so that its address is not reused by another (op() makes some anew)
-    memo_.emplace(node, std::make_pair(e, value));
-    return value;
+    return memo_.emplace(node, std::make_pair(e, std::move(value))).first->second.second;
   }
 
  private:
-  std::optional<std::uint64_t> evaluate(const Expr& e) {
+  // the same value at every point
+  Values constant(std::uint64_t v) const {
+    return {std::vector<std::uint64_t>(points_, v), std::vector<bool>(points_, true)};
+  }
+
+  std::optional<Values> evaluate(const Expr& e) {
     if (is_a<numeric>(e)) {
       const auto value = rational_mod(GiNaC::ex_to<numeric>(e));
-      return value ? value : unsupported();
+      if (!value) return std::nullopt;
+      return constant(*value);
     }
     if (is_a<GiNaC::symbol>(e) || is_a<GiNaC::function>(e)) {
       const auto& table = is_a<GiNaC::symbol>(e) ? symbols_ : functions_;
       const auto it = table.find(e);
-      if (it == table.end()) return unsupported();
-      return it->second;
+      if (it == table.end()) return std::nullopt;
+      return Values{it->second, std::vector<bool>(points_, true)};
     }
     if (is_exactly_a<GiNaC::add>(e) || is_exactly_a<GiNaC::mul>(e)) {
       const bool sum = is_exactly_a<GiNaC::add>(e);
-      std::uint64_t result = sum ? 0 : 1;
+      Values result = constant(sum ? 0 : 1);
       for (std::size_t i = 0; i < e.nops(); ++i) {
         const auto term = (*this)(e.op(i));
         if (!term) return std::nullopt;
-        result = sum ? add_mod(result, *term) : mul_mod(result, *term);
+        for (std::size_t k = 0; k < points_; ++k) {
+          result.at[k] =
+              sum ? add_mod(result.at[k], term->at[k]) : mul_mod(result.at[k], term->at[k]);
+          result.defined[k] = result.defined[k] && term->defined[k];
+        }
       }
       return result;
     }
     if (is_exactly_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::integer)) {
-      const auto base = (*this)(e.op(0));
+      auto base = (*this)(e.op(0));
       if (!base) return std::nullopt;
       const numeric n = GiNaC::ex_to<numeric>(e.op(1));
-      if (!n.is_pos_integer()) {
-        const auto inverse = inverse_mod(*base);
-        if (!inverse) return std::nullopt;
-        return pow_mod(*inverse, static_cast<std::uint64_t>((-n).to_long()));
+      const auto exponent = static_cast<std::uint64_t>(GiNaC::abs(n).to_long());
+      for (std::size_t k = 0; k < points_; ++k) {
+        std::uint64_t& v = base->at[k];
+        if (!n.is_pos_integer()) {
+          const auto inverse = inverse_mod(v);
+          if (!inverse) base->defined[k] = false;
+          v = inverse.value_or(0);
+        }
+        v = pow_mod(v, exponent);
       }
-      return pow_mod(*base, static_cast<std::uint64_t>(n.to_long()));
+      return base;
     }
-    return unsupported();  // radicals, other functions, constants
+    return std::nullopt;  // radicals, other functions, constants
   }
 
-  std::optional<std::uint64_t> unsupported() {
-    only_undefined_ = false;
-    return std::nullopt;
-  }
-
-  const std::map<Expr, std::uint64_t, GiNaC::ex_is_less>& symbols_;
-  const std::map<Expr, std::uint64_t, GiNaC::ex_is_less>& functions_;
-  std::unordered_map<const GiNaC::basic*, std::pair<Expr, std::optional<std::uint64_t>>> memo_;
-  bool only_undefined_ = true;
+  const PointValues& symbols_;
+  const PointValues& functions_;
+  std::size_t points_;
+  std::unordered_map<const GiNaC::basic*, std::pair<Expr, std::optional<Values>>> memo_;
 };
 
 }  // namespace
@@ -312,46 +330,50 @@ std::optional<bool> vanishes_identically(const Expr& e, int points) {
                                                         std::int64_t{1} << 40);
   std::uniform_int_distribution<std::int64_t> denominator(1, std::int64_t{1} << 40);
   const auto random_rational = [&] { return numeric(numerator(engine)) / denominator(engine); };
-  int evaluated = 0;
-  for (int attempt = 0; evaluated < points && attempt < 4 * points; ++attempt) {
-    std::map<Expr, std::uint64_t, GiNaC::ex_is_less> symbols, functions;
-    for (const Expr& s : others) symbols[s] = *rational_mod(random_rational());
-    std::map<Expr, Turn, CanonicalLess> unit_turns;
-    bool defined = true;
-    for (const auto& [u, L] : units) {
-      const auto tau = rational_mod(random_rational());
-      const std::uint64_t t2 = mul_mod(*tau, *tau);
-      const auto scale = inverse_mod(add_mod(1, t2));
-      if (!scale) defined = false;
-      unit_turns[u] = {mul_mod(sub_mod(1, t2), scale.value_or(0)),
-                       mul_mod(mul_mod(2, *tau), scale.value_or(0))};
-    }
-    for (const Expr& f : trig) {
-      const Argument& a = arguments.at(f.op(0));
-      Turn z = power(Turn{0, 1}, GiNaC::mod(a.quarter_turns, 4).to_long());
-      for (const auto& [u, c] : a.multiples) {
-        z = z * power(unit_turns.at(u), (c * units.at(u)).to_long());
+  // batches of points until `points` of them are defined, at most 4 × points drawn
+  int evaluated = 0, drawn = 0;
+  while (evaluated < points && drawn < 4 * points) {
+    const auto batch = static_cast<std::size_t>(std::min(points - evaluated, 4 * points - drawn));
+    drawn += static_cast<int>(batch);
+    PointValues symbols, functions;
+    std::vector<bool> defined(batch, true);
+    for (std::size_t point = 0; point < batch; ++point) {
+      for (const Expr& s : others) symbols[s].push_back(*rational_mod(random_rational()));
+      std::map<Expr, Turn, CanonicalLess> unit_turns;
+      for (const auto& [u, L] : units) {
+        const auto tau = rational_mod(random_rational());
+        const std::uint64_t t2 = mul_mod(*tau, *tau);
+        const auto scale = inverse_mod(add_mod(1, t2));
+        if (!scale) defined[point] = false;
+        unit_turns[u] = {mul_mod(sub_mod(1, t2), scale.value_or(0)),
+                         mul_mod(mul_mod(2, *tau), scale.value_or(0))};
       }
-      if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(f)) {
-        functions[f] = z.s;
-      } else if (GiNaC::is_the_function<GiNaC::cos_SERIAL>(f)) {
-        functions[f] = z.c;
-      } else {
-        const auto inverse = inverse_mod(z.c);
-        if (!inverse) defined = false;
-        functions[f] = mul_mod(z.s, inverse.value_or(0));
+      for (const Expr& f : trig) {
+        const Argument& a = arguments.at(f.op(0));
+        Turn z = power(Turn{0, 1}, GiNaC::mod(a.quarter_turns, 4).to_long());
+        for (const auto& [u, c] : a.multiples) {
+          z = z * power(unit_turns.at(u), (c * units.at(u)).to_long());
+        }
+        std::uint64_t value = z.c;
+        if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(f)) {
+          value = z.s;
+        } else if (!GiNaC::is_the_function<GiNaC::cos_SERIAL>(f)) {
+          const auto inverse = inverse_mod(z.c);
+          if (!inverse) defined[point] = false;
+          value = mul_mod(z.s, inverse.value_or(0));
+        }
+        functions[f].push_back(value);
       }
     }
-    if (!defined) continue;
-    Evaluator evaluate(symbols, functions);
-    const auto value = evaluate(e);
-    if (!value) {
-      // undefined here (a denominator 0): another point; not exactly evaluable: no answer
-      if (!evaluate.only_undefined()) return std::nullopt;
-      continue;
+    // not exactly evaluable: no answer; undefined at a point (a denominator 0): another point
+    Evaluator evaluate(symbols, functions, batch);
+    const auto values = evaluate(e);
+    if (!values) return std::nullopt;
+    for (std::size_t point = 0; point < batch; ++point) {
+      if (!defined[point] || !values->defined[point]) continue;
+      if (values->at[point] != 0) return false;
+      ++evaluated;
     }
-    if (*value != 0) return false;
-    ++evaluated;
   }
   if (evaluated < points) return std::nullopt;
   return true;
