@@ -49,24 +49,50 @@ Expr reduce_modulo_unit_circles(const Expr& p, const UnitCircles& pairs) {
     vs.push_back(pairs[k].first);
   }
   if (reduced.empty()) return p;
-  const auto reduce_term = [&reduced, &vs](const Expr& term) {
-    Expr result = term;
+  // each term t v^k … as the expanded t v^(k mod 2) (1 − w²)^⌊k/2⌋ … = Σ_i C(⌊k/2⌋, i) (−1)^i
+  // t v^(k mod 2) w^(2i) …: monomials times monomials, already expanded (what GiNaC's expand of
+  // the products would give, without its walk through the whole sum)
+  std::vector<Expr> terms;
+  const auto reduce_term = [&](const Expr& term) {
     const std::vector<std::optional<int>> term_degrees = polynomial_degrees(term, vs);
+    // past the budget: the products as they are, for the expansion to refuse
+    double count = 1;
+    for (const auto& k : term_degrees) count *= k.value_or(0) / 2 + 1;
+    if (count > kMaxExpandedTerms) {
+      Expr product = term;
+      for (std::size_t i = 0; i < reduced.size(); ++i) {
+        const int k = term_degrees[i].value_or(0);
+        product = product / GiNaC::pow(reduced[i].first, k - k % 2) *
+                  GiNaC::pow(1 - GiNaC::pow(reduced[i].second, 2), k / 2);
+      }
+      terms.push_back(expand_within_budget(product, "simplifying"));
+      return;
+    }
+    std::vector<Expr> products{term};
     for (std::size_t i = 0; i < reduced.size(); ++i) {
       const auto& [v, w] = reduced[i];
       const int k = term_degrees[i].value_or(0);
       if (k < 2) continue;
-      result = result / GiNaC::pow(v, k - k % 2) * GiNaC::pow(1 - GiNaC::pow(w, 2), k / 2);
+      const int j = k / 2;
+      std::vector<Expr> next;
+      for (const Expr& product : products) {
+        const Expr lowered = product / GiNaC::pow(v, k - k % 2);
+        GiNaC::numeric binomial = 1;  // C(j, r)
+        for (int r = 0; r <= j; ++r) {
+          next.push_back(lowered * (r % 2 ? -binomial : binomial) * GiNaC::pow(w, 2 * r));
+          binomial = binomial * (j - r) / (r + 1);
+        }
+      }
+      products = std::move(next);
     }
-    return result;
+    terms.insert(terms.end(), products.begin(), products.end());
   };
-  std::vector<Expr> terms;
   if (GiNaC::is_exactly_a<GiNaC::add>(p)) {
-    for (std::size_t i = 0; i < p.nops(); ++i) terms.push_back(reduce_term(p.op(i)));
+    for (std::size_t i = 0; i < p.nops(); ++i) reduce_term(p.op(i));
   } else {
-    terms.push_back(reduce_term(p));
+    reduce_term(p);
   }
-  return expand_within_budget(sum_of(terms), "simplifying");
+  return sum_of(terms);
 }
 
 // A fixed remainder of p modulo s² + c² − 1 for every trigonometric argument (the sines' squares
