@@ -12,6 +12,22 @@
 namespace unidyn {
 namespace {
 
+// An expression and its negative are one subexpression (GiNaC writes a sum with either sign, by
+// its own order of terms, which moves with the memory layout, and a product's sign follows its
+// sums'): the one whose canonical text does not start with a minus, its text, and the sign taken
+// out.
+struct SignedText {
+  Expr positive;
+  std::string text;
+  int sign = 1;
+};
+SignedText with_sign_out(const Expr& e) {
+  std::string text = canonical_text(e);
+  if (!text.starts_with("-")) return {e, std::move(text), 1};
+  const Expr negated = -e;
+  return {negated, canonical_text(negated), -1};
+}
+
 // How often each subexpression occurs, by canonical text, with one instance and its size.
 struct Occurrence {
   Expr instance;
@@ -20,25 +36,25 @@ struct Occurrence {
 void count(const Expr& e, std::size_t min_size, std::map<std::string, Occurrence>& found) {
   const std::size_t size = expression_size(e);
   if (size < min_size) return;
-  Occurrence& o = found[canonical_text(e)];
+  const auto [x, text, sign] = with_sign_out(e);
+  Occurrence& o = found[text];
   if (o.count++ == 0) {
-    o.instance = e;
+    o.instance = x;
     o.size = size;
   }
   // the parts of an expression met again are counted with it, not again
   if (o.count > 1) return;
-  for (std::size_t i = 0; i < e.nops(); ++i) count(e.op(i), min_size, found);
+  for (std::size_t i = 0; i < x.nops(); ++i) count(x.op(i), min_size, found);
 }
 
-// Bottom up: each subexpression with a name replaced by it.
+// Bottom up: each subexpression with a name replaced by it (± it, for a sum).
 struct Replace : GiNaC::map_function {
   const std::map<std::string, Expr>& named;
   explicit Replace(const std::map<std::string, Expr>& n) : named(n) {}
   Expr operator()(const Expr& e) override {
-    if (const auto found = named.find(canonical_text(e)); found != named.end()) {
-      return found->second;
-    }
-    return e.map(*this);
+    const auto [x, text, sign] = with_sign_out(e);
+    if (const auto found = named.find(text); found != named.end()) return sign * found->second;
+    return sign * x.map(*this);
   }
 };
 

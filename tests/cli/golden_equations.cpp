@@ -101,7 +101,8 @@ TEST(GoldenEquations, TheBicycleInAnyLayout) {
 TEST(GoldenEquations, CodeAndRowsInAnyLayout) {
   for (const char* command :
        {"derive rolling-disk --format c --method kane", "derive double-pendulum --format python",
-        "simulate sphere-turntable --t-end 1", "simulate spherical-pendulum-cartesian --t-end 1"}) {
+        "simulate sphere-turntable --t-end 1", "simulate spherical-pendulum-cartesian --t-end 1",
+        "derive torque-free-body --form zees"}) {
     const Outcome fixed = run(command);
     ASSERT_EQ(fixed.status, 0) << fixed.err;
     for (int run_number = 0; run_number < 2; ++run_number) {
