@@ -22,13 +22,19 @@ struct CanonicalLess {
   bool operator()(const Expr& a, const Expr& b) const { return canonical_less(a, b); }
 };
 
+// An expression and its size (expression_size), measured once.
+struct Sized {
+  Expr e;
+  std::size_t size;
+  explicit Sized(const Expr& x) : e(x), size(expression_size(x)) {}
+};
+
 // Of two equal expressions, whether `candidate` is the better: smaller, or as small and first in
 // the canonical order (so that the choice never depends on GiNaC's order).
-bool better(const Expr& candidate, const Expr& best) {
-  const std::size_t a = expression_size(candidate), b = expression_size(best);
-  if (a != b) return a < b;
+bool better(const Sized& candidate, const Sized& best) {
+  if (candidate.size != best.size) return candidate.size < best.size;
   // (one expression is not better than itself: nothing to print)
-  return !candidate.is_equal(best) && canonical_less(candidate, best);
+  return !candidate.e.is_equal(best.e) && canonical_less(candidate.e, best.e);
 }
 
 // Pairs (v, w) of the sine and cosine symbols of one argument, v the one reduced.
@@ -205,18 +211,20 @@ namespace {
 Expr simplify_uncached(const Expr& e) {
   SimplifyInside inside;
   check_expansion_budget(e, "simplifying");
-  Expr best = expand_within_budget(inside(e), "simplifying");
+  Sized best(expand_within_budget(inside(e), "simplifying"));
   // A rational function is brought to one fraction only when that is smaller.
-  if (const Expr normal = canonical_normal(best); better(normal, best)) best = normal;
+  if (const Expr normal = canonical_normal(best.e); !normal.is_equal(best.e)) {
+    if (const Sized sized(normal); better(sized, best)) best = sized;
+  }
   // sin²x + cos²x = 1: with s = sin x, c = cos x for each argument, numerator and denominator are
   // polynomials in the s and c; reduced modulo s² + c² − 1 in s or in c they take a unique form,
   // so an expression that is zero becomes 0 whatever order GiNaC keeps its terms in. Each argument
   // is reduced both ways (every combination for up to two arguments reduced, one argument at a
   // time for three or four, all one way or all the other beyond) and the smallest kept.
   GiNaC::exmap radicals;
-  best = hide_radicals(best, radicals);
-  const std::vector<Expr> arguments = trig_arguments(best);
-  if (arguments.empty()) return best.subs(radicals);
+  if (const Expr hidden = hide_radicals(best.e, radicals); !radicals.empty()) best = Sized(hidden);
+  const std::vector<Expr> arguments = trig_arguments(best.e);
+  if (arguments.empty()) return best.e.subs(radicals);
   std::vector<GiNaC::symbol> s, c;
   GiNaC::exmap to_symbols, back;
   for (const Expr& x : arguments) {
@@ -228,7 +236,7 @@ Expr simplify_uncached(const Expr& e) {
     back[c.back()] = GiNaC::cos(x);
   }
   // numer_denom normalises by itself; its sign is fixed by canonical_normal below
-  const Expr fraction = GiNaC::numer_denom(best.subs(to_symbols));
+  const Expr fraction = GiNaC::numer_denom(best.e.subs(to_symbols));
   const Expr numerator = expand_within_budget(fraction.op(0), "simplifying"),
              denominator = expand_within_budget(fraction.op(1), "simplifying");
   const std::size_t n = arguments.size();
@@ -251,7 +259,7 @@ Expr simplify_uncached(const Expr& e) {
     if (!reduced_argument[i] && n <= 4) idle |= std::size_t{1} << i;
   }
   // a polynomial in which no sine or cosine is squared is its own remainder
-  if (!any && denominator.is_equal(1)) return best.subs(radicals);
+  if (!any && denominator.is_equal(1)) return best.e.subs(radicals);
   // the reduction by one choice of sine or cosine per argument (bit i set: argument i in its
   // sine, up to four arguments; beyond, all in the sine or all in the cosine): its best form,
   // offered to `best`
@@ -264,9 +272,16 @@ Expr simplify_uncached(const Expr& e) {
     }
     const Expr num = reduce_modulo_unit_circles(numerator, pairs),
                den = reduce_modulo_unit_circles(denominator, pairs);
-    const Expr reduced = canonical_normal(num / den).subs(back);
-    const Expr expanded = expand_within_budget(reduced, "simplifying");
-    const Expr form = better(expanded, reduced) ? expanded : reduced;
+    const Sized reduced(canonical_normal(num / den).subs(back));
+    // a polynomial's remainder is expanded already (monomials in which the symbols became sines
+    // and cosines); a fraction's, expanded, may be smaller
+    Sized form = reduced;
+    if (!den.is_equal(1)) {
+      if (const Sized expanded(expand_within_budget(reduced.e, "simplifying"));
+          better(expanded, reduced)) {
+        form = expanded;
+      }
+    }
     if (better(form, best)) best = form;
     return form;
   };
@@ -284,17 +299,17 @@ Expr simplify_uncached(const Expr& e) {
     // three or four: from all in the cosine, each argument turned to its sine where that is
     // better (n + 1 reductions rather than 2^n)
     std::size_t mask = 0;
-    Expr current = reduction(mask);
+    Sized current = reduction(mask);
     for (std::size_t i = 0; i < n; ++i) {
       if (!reduced_argument[i]) continue;
       const std::size_t turned = mask | (std::size_t{1} << i);
-      if (const Expr form = reduction(turned); better(form, current)) {
+      if (const Sized form = reduction(turned); better(form, current)) {
         mask = turned;
         current = form;
       }
     }
   }
-  return best.subs(radicals);
+  return best.e.subs(radicals);
 }
 
 }  // namespace

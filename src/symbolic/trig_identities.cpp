@@ -11,6 +11,7 @@
 
 #include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
+#include "unidyn/symbolic/polynomial_degrees.hpp"
 
 namespace unidyn {
 namespace {
@@ -295,21 +296,28 @@ Expr homogenize_trig(const Expr& e) {
     if (!y.is_polynomial(GiNaC::lst{s, c})) continue;
     // the highest degree in (s, c) of each parity, and whether a term lies below it
     const std::vector<Expr> terms = terms_of(y);
+    std::vector<int> degrees;
     int top[2] = {-1, -1};
     for (const Expr& t : terms) {
-      const int d = t.degree(s) + t.degree(c);
-      top[d % 2] = std::max(top[d % 2], d);
+      const auto d = polynomial_degrees(t, {s, c});
+      degrees.push_back(d[0].value_or(0) + d[1].value_or(0));
+      top[degrees.back() % 2] = std::max(top[degrees.back() % 2], degrees.back());
     }
+    // each term t below the top as t (s² + c²)^m expanded: Σ C(m, i) t s^(2i) c^(2(m − i)),
+    // monomials times monomials (what expanding the products gives, without the walk)
     std::vector<Expr> raised;
     bool below = false;
-    for (const Expr& t : terms) {
-      const int d = t.degree(s) + t.degree(c);
-      below = below || d < top[d % 2];
-      raised.push_back(t * GiNaC::pow(GiNaC::pow(s, 2) + GiNaC::pow(c, 2), (top[d % 2] - d) / 2));
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+      const int m = (top[degrees[k] % 2] - degrees[k]) / 2;
+      below = below || m > 0;
+      GiNaC::numeric binomial = 1;  // C(m, i)
+      for (int i = 0; i <= m; ++i) {
+        raised.push_back(terms[k] * binomial * GiNaC::pow(s, 2 * i) * GiNaC::pow(c, 2 * (m - i)));
+        binomial = binomial * (m - i) / (i + 1);
+      }
     }
     if (!below) continue;
-    x = expand_within_budget(sum_of(raised), "simplifying")
-            .subs(GiNaC::exmap{{s, GiNaC::sin(argument)}, {c, GiNaC::cos(argument)}});
+    x = sum_of(raised).subs(GiNaC::exmap{{s, GiNaC::sin(argument)}, {c, GiNaC::cos(argument)}});
   }
   return x;
 }
