@@ -7,11 +7,11 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
-#include "unidyn/symbolic/polynomial_degrees.hpp"
 
 namespace unidyn {
 namespace {
@@ -35,36 +35,68 @@ struct Reading {
   int sign;
   Expr rest, a, b;
 };
-// The readings grouped by what two must share to combine: the texts of R, A and B.
-using Readings = std::map<std::tuple<std::string, std::string, std::string>, std::vector<Reading>>;
+// What two readings must share to combine: the texts of R, A and B.
+using ReadingKey = std::tuple<std::string, std::string, std::string>;
+// The readings grouped by that key.
+using Readings = std::map<ReadingKey, std::vector<Reading>>;
 
-Readings readings_of(const std::vector<Expr>& terms) {
+// A term's readings (its index in the sum left to be set).
+std::vector<std::pair<ReadingKey, Reading>> term_readings(const Expr& term) {
+  std::vector<std::pair<ReadingKey, Reading>> readings;
+  GiNaC::numeric number = 1;
+  std::vector<Expr> factors;
+  for (std::size_t i = 0; i < (is_exactly_a<GiNaC::mul>(term) ? term.nops() : 1); ++i) {
+    const Expr f = is_exactly_a<GiNaC::mul>(term) ? term.op(i) : term;
+    if (is_exactly_a<GiNaC::numeric>(f)) {
+      number *= GiNaC::ex_to<GiNaC::numeric>(f);
+    } else {
+      factors.push_back(f);
+    }
+  }
+  for (std::size_t i = 0; i < factors.size(); ++i) {
+    for (std::size_t j = 0; j < factors.size(); ++j) {
+      const Expr &f = factors[i], &g = factors[j];
+      if (i == j || !(is_sine(f) || is_cosine(f)) || !(is_sine(g) || is_cosine(g))) continue;
+      if (!canonical_less(f.op(0), g.op(0))) continue;
+      Expr rest = GiNaC::abs(number);
+      for (std::size_t k = 0; k < factors.size(); ++k) {
+        if (k != i && k != j) rest *= factors[k];
+      }
+      readings.emplace_back(
+          ReadingKey{canonical_text(rest), canonical_text(f.op(0)), canonical_text(g.op(0))},
+          Reading{0, is_sine(f), is_sine(g), number.is_negative() ? -1 : 1, rest, f.op(0),
+                  g.op(0)});
+    }
+  }
+  return readings;
+}
+
+// Each term of a sum that is being combined pair by pair: its canonical text and its readings,
+// found once (the sum keeps all its terms but two from one step to the next).
+class TermCache {
+ public:
+  struct Entry {
+    std::string text;
+    std::vector<std::pair<ReadingKey, Reading>> readings;
+  };
+  const Entry& operator()(const Expr& term) {
+    if (const auto found = entries_.find(term); found != entries_.end()) return found->second;
+    return entries_.emplace(term, Entry{canonical_text(term), term_readings(term)}).first->second;
+  }
+
+ private:
+  struct Hash {
+    std::size_t operator()(const Expr& x) const { return x.gethash(); }
+  };
+  std::unordered_map<Expr, Entry, Hash, GiNaC::ex_is_equal> entries_;
+};
+
+Readings readings_of(const std::vector<Expr>& terms, TermCache& cache) {
   Readings readings;
   for (std::size_t t = 0; t < terms.size(); ++t) {
-    GiNaC::numeric number = 1;
-    std::vector<Expr> factors;
-    const Expr& term = terms[t];
-    for (std::size_t i = 0; i < (is_exactly_a<GiNaC::mul>(term) ? term.nops() : 1); ++i) {
-      const Expr f = is_exactly_a<GiNaC::mul>(term) ? term.op(i) : term;
-      if (is_exactly_a<GiNaC::numeric>(f)) {
-        number *= GiNaC::ex_to<GiNaC::numeric>(f);
-      } else {
-        factors.push_back(f);
-      }
-    }
-    for (std::size_t i = 0; i < factors.size(); ++i) {
-      for (std::size_t j = 0; j < factors.size(); ++j) {
-        const Expr &f = factors[i], &g = factors[j];
-        if (i == j || !(is_sine(f) || is_cosine(f)) || !(is_sine(g) || is_cosine(g))) continue;
-        if (!canonical_less(f.op(0), g.op(0))) continue;
-        Expr rest = GiNaC::abs(number);
-        for (std::size_t k = 0; k < factors.size(); ++k) {
-          if (k != i && k != j) rest *= factors[k];
-        }
-        readings[{canonical_text(rest), canonical_text(f.op(0)), canonical_text(g.op(0))}]
-            .push_back(
-                {t, is_sine(f), is_sine(g), number.is_negative() ? -1 : 1, rest, f.op(0), g.op(0)});
-      }
+    for (const auto& [key, reading] : cache(terms[t]).readings) {
+      readings[key].push_back(reading);
+      readings[key].back().term = t;
     }
   }
   return readings;
@@ -198,16 +230,17 @@ std::vector<Expr> trig_arguments(const Expr& e) {
 
 Expr combine_angle_sums(const Expr& e) {
   Expr x = expand_within_budget(e, "simplifying");
+  TermCache cache;
   for (;;) {
     // the terms in the canonical order, so that the pair taken never depends on GiNaC's
     std::vector<std::pair<std::string, Expr>> keyed;
-    for (const Expr& t : terms_of(x)) keyed.emplace_back(canonical_text(t), t);
+    for (const Expr& t : terms_of(x)) keyed.emplace_back(cache(t).text, t);
     std::stable_sort(keyed.begin(), keyed.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
     std::vector<Expr> terms;
     for (const auto& [text, t] : keyed) terms.push_back(t);
     if (terms.size() < 2 || terms.size() > kMaxCombinedTerms) return x;
-    const auto pair = first_pair(readings_of(terms));
+    const auto pair = first_pair(readings_of(terms, cache));
     if (!pair) return x;
     const auto& [first, second, term] = *pair;
     std::vector<Expr> sum{term};
@@ -246,28 +279,6 @@ std::optional<int> trig_degree(const Expr& term, const Expr& sine_x, const Expr&
   return d;
 }
 
-// Whether homogenising the expanded x in the sine and cosine of `argument` may change it: a term
-// below the top degree of its parity, or a term it cannot tell.
-bool homogenizable(const Expr& x, const Expr& argument) {
-  const Expr sine_x = GiNaC::sin(argument), cosine_x = GiNaC::cos(argument);
-  int top[2] = {-1, -1};
-  std::vector<int> degrees;
-  for (const Expr& t : terms_of(x)) {
-    const auto d = trig_degree(t, sine_x, cosine_x);
-    if (!d) return true;
-    degrees.push_back(*d);
-    top[*d % 2] = std::max(top[*d % 2], *d);
-  }
-  for (const int d : degrees) {
-    if (d < top[d % 2]) return true;
-  }
-  return false;
-}
-
-}  // namespace
-
-namespace {
-
 // Whether no term of the expanded x has more than one sine or cosine factor (counted with their
 // powers) and none sits elsewhere: then each term's degree in every argument is 0 or 1, the top
 // of its parity, and homogenising changes nothing.
@@ -289,22 +300,21 @@ Expr homogenize_trig(const Expr& e) {
   Expr x = expand_within_budget(e, "simplifying");
   if (linear_in_sines_and_cosines(x)) return x;
   for (const Expr& argument : trig_arguments(x)) {
-    if (!homogenizable(x, argument)) continue;
-    const GiNaC::symbol s, c;
-    const Expr y = expand_within_budget(
-        x.subs(GiNaC::exmap{{GiNaC::sin(argument), s}, {GiNaC::cos(argument), c}}), "simplifying");
-    if (!y.is_polynomial(GiNaC::lst{s, c})) continue;
-    // the highest degree in (s, c) of each parity, and whether a term lies below it
-    const std::vector<Expr> terms = terms_of(y);
+    const Expr sine_x = GiNaC::sin(argument), cosine_x = GiNaC::cos(argument);
+    // each term's degree in sin x and cos x together, and the highest of each parity (none where
+    // they sit inside something else: not a polynomial in them)
+    const std::vector<Expr> terms = terms_of(x);
     std::vector<int> degrees;
     int top[2] = {-1, -1};
     for (const Expr& t : terms) {
-      const auto d = polynomial_degrees(t, {s, c});
-      degrees.push_back(d[0].value_or(0) + d[1].value_or(0));
-      top[degrees.back() % 2] = std::max(top[degrees.back() % 2], degrees.back());
+      const auto d = trig_degree(t, sine_x, cosine_x);
+      if (!d) break;
+      degrees.push_back(*d);
+      top[*d % 2] = std::max(top[*d % 2], *d);
     }
-    // each term t below the top as t (s² + c²)^m expanded: Σ C(m, i) t s^(2i) c^(2(m − i)),
-    // monomials times monomials (what expanding the products gives, without the walk)
+    if (degrees.size() < terms.size()) continue;
+    // each term t below the top as t (sin²x + cos²x)^m expanded: Σ C(m, i) t sin^(2i)x
+    // cos^(2(m − i))x, monomials times monomials (what expanding the products gives)
     std::vector<Expr> raised;
     bool below = false;
     for (std::size_t k = 0; k < terms.size(); ++k) {
@@ -312,12 +322,12 @@ Expr homogenize_trig(const Expr& e) {
       below = below || m > 0;
       GiNaC::numeric binomial = 1;  // C(m, i)
       for (int i = 0; i <= m; ++i) {
-        raised.push_back(terms[k] * binomial * GiNaC::pow(s, 2 * i) * GiNaC::pow(c, 2 * (m - i)));
+        raised.push_back(terms[k] * binomial * GiNaC::pow(sine_x, 2 * i) *
+                         GiNaC::pow(cosine_x, 2 * (m - i)));
         binomial = binomial * (m - i) / (i + 1);
       }
     }
-    if (!below) continue;
-    x = sum_of(raised).subs(GiNaC::exmap{{s, GiNaC::sin(argument)}, {c, GiNaC::cos(argument)}});
+    if (below) x = sum_of(raised);
   }
   return x;
 }
