@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -80,6 +81,9 @@ class Printer {
     return text;
   }
 
+  // How many nodes the memos hold.
+  std::size_t nodes_kept() const { return keep_.size(); }
+
   // The sign GiNaC chose for e, against the canonical one: −1 for a sum whose first term in the
   // canonical order has a negative number, and for an odd power of such a sum; else 1.
   int sign_of(const Expr& e) {
@@ -104,8 +108,9 @@ class Printer {
   // The node of e, kept alive: GiNaC makes a sum's terms and a product's factors on request, and a
   // temporary's address could otherwise come back as another expression's in the memos.
   const GiNaC::basic* node(const Expr& e) {
-    keep_.push_back(e);
-    return &GiNaC::ex_to<GiNaC::basic>(e);
+    const GiNaC::basic* n = &GiNaC::ex_to<GiNaC::basic>(e);
+    if (kept_.insert(n).second) keep_.push_back(e);
+    return n;
   }
 
   // How many primes end the name of a symbol in e (2 at most): 1 for a rate q', 2 for an
@@ -341,7 +346,20 @@ class Printer {
   std::map<const GiNaC::basic*, std::unique_ptr<Parts>> parts_;
   std::unordered_map<const GiNaC::basic*, int> orders_;
   std::vector<Expr> keep_;
+  std::unordered_set<const GiNaC::basic*> kept_;
 };
+
+// The text printer, its memos kept from one expression to the next (the parts of the
+// expressions printed one after another are mostly the same nodes); a new one when they hold
+// too many.
+Printer& text_printer() {
+  constexpr std::size_t kNodesKept = 1 << 20;
+  thread_local std::unique_ptr<Printer> printer;
+  if (!printer || printer->nodes_kept() > kNodesKept) {
+    printer = std::make_unique<Printer>(Printer::Style::text);
+  }
+  return *printer;
+}
 
 }  // namespace
 
@@ -355,7 +373,7 @@ std::string canonical_text(const Expr& e) {
   thread_local std::unordered_map<Expr, std::string, Hash, GiNaC::ex_is_equal> printed;
   if (const auto found = printed.find(e); found != printed.end()) return found->second;
   if (printed.size() >= kKept) printed.clear();
-  return printed.emplace(e, Printer(Printer::Style::text).print(e, 0)).first->second;
+  return printed.emplace(e, text_printer().print(e, 0)).first->second;
 }
 
 std::string canonical_sympy(const Expr& e) {
@@ -381,7 +399,7 @@ bool canonical_less(const Expr& a, const Expr& b) {
 }
 
 int canonical_sign(const Expr& e) {
-  return Printer(Printer::Style::text).sign_of(e);
+  return text_printer().sign_of(e);
 }
 
 // GiNaC's normal form n/d is unique up to the sign of both, which GiNaC fixes by a leading
