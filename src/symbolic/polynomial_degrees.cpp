@@ -9,12 +9,17 @@ namespace unidyn {
 
 using GiNaC::is_exactly_a;
 
+PolynomialDegrees::PolynomialDegrees(const std::vector<Expr>& xs) : xs_(xs) {
+  for (std::size_t k = 0; k < xs.size(); ++k) index_.emplace(xs[k], k);
+}
+
 std::vector<std::optional<int>> polynomial_degrees(const Expr& p, const std::vector<Expr>& xs) {
-  struct Hash {
-    std::size_t operator()(const Expr& x) const { return x.gethash(); }
-  };
-  std::unordered_map<Expr, std::size_t, Hash, GiNaC::ex_is_equal> index;
-  for (std::size_t k = 0; k < xs.size(); ++k) index.emplace(xs[k], k);
+  return PolynomialDegrees(xs)(p);
+}
+
+std::vector<std::optional<int>> PolynomialDegrees::operator()(const Expr& p) const {
+  const std::vector<Expr>& xs = xs_;
+  const auto& index = index_;
   std::vector<int> degree(xs.size(), 0);
   std::vector<bool> polynomial(xs.size(), true);
   std::vector<int> term_degree(xs.size());

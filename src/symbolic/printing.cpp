@@ -59,8 +59,9 @@ Expr reduce_modulo_unit_circles(const Expr& p, const UnitCircles& pairs) {
   // t v^(k mod 2) w^(2i) …: monomials times monomials, already expanded (what GiNaC's expand of
   // the products would give, without its walk through the whole sum)
   std::vector<Expr> terms;
+  const PolynomialDegrees degrees_in_vs(vs);
   const auto reduce_term = [&](const Expr& term) {
-    const std::vector<std::optional<int>> term_degrees = polynomial_degrees(term, vs);
+    const std::vector<std::optional<int>> term_degrees = degrees_in_vs(term);
     // past the budget: the products as they are, for the expansion to refuse
     double count = 1;
     for (const auto& k : term_degrees) count *= k.value_or(0) / 2 + 1;

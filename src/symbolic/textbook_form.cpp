@@ -112,10 +112,11 @@ std::vector<GroupedTerm> group_by_monomials(const Expr& e, const std::vector<Exp
                                             Expr (*simplifier)(const Expr&)) {
   const Expr x = expand_within_budget(e, "grouping");
   std::map<std::vector<int>, std::vector<Expr>> groups;
+  const PolynomialDegrees degrees_in_symbols(symbols);
   const auto add_term = [&](const Expr& term) {
     std::vector<int> exponents;
     Expr monomial = 1;
-    const std::vector<std::optional<int>> degrees = polynomial_degrees(term, symbols);
+    const std::vector<std::optional<int>> degrees = degrees_in_symbols(term);
     for (std::size_t k = 0; k < symbols.size(); ++k) {
       const int d = degrees[k].value_or(0);
       exponents.push_back(d);

@@ -219,12 +219,25 @@ std::optional<Expr> collect_in_sines_and_cosines(const Expr& e) {
 }
 
 std::vector<Expr> trig_arguments(const Expr& e) {
-  GiNaC::exset found;
-  e.find(GiNaC::sin(GiNaC::wild()), found);
-  e.find(GiNaC::cos(GiNaC::wild()), found);
+  // the outermost sines and the outermost cosines (GiNaC's find of sin(x) and of cos(x): not the
+  // sines inside a sine's argument), each shared node walked once for each of the two searches
   const auto less = [](const Expr& a, const Expr& b) { return canonical_less(a, b); };
   std::set<Expr, decltype(less)> arguments(less);
-  for (const auto& f : found) arguments.insert(f.op(0));
+  std::set<std::pair<const GiNaC::basic*, int>> seen;
+  std::vector<Expr> kept;  // (the nodes walked, alive: op() makes some anew)
+  const auto walk = [&](const Expr& x, bool sines, bool cosines, const auto& self) -> void {
+    if (x.nops() == 0) return;
+    if (!seen.emplace(&GiNaC::ex_to<GiNaC::basic>(x), int(sines) + 2 * int(cosines)).second) return;
+    kept.push_back(x);
+    if ((sines && is_sine(x)) || (cosines && is_cosine(x))) {
+      arguments.insert(x.op(0));
+      sines = sines && !is_sine(x);
+      cosines = cosines && !is_cosine(x);
+      if (!sines && !cosines) return;
+    }
+    for (std::size_t i = 0; i < x.nops(); ++i) self(x.op(i), sines, cosines, self);
+  };
+  walk(e, true, true, walk);
   return {arguments.begin(), arguments.end()};
 }
 

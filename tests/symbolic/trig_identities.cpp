@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+#include <string>
+
 #include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
@@ -93,6 +96,25 @@ TEST(TrigIdentities, ArgumentsInTheCanonicalOrder) {
   EXPECT_EQ(canonical_text(arguments[0]), "a");
   EXPECT_EQ(canonical_text(arguments[1]), "a+b");
   EXPECT_EQ(canonical_text(arguments[2]), "b");
+}
+
+TEST(TrigIdentities, ArgumentsAreThoseGiNaCsFindGives) {
+  // the outermost sines and the outermost cosines: sin(b) inside sin(a + sin b) is not one of
+  // the sines found, though the cosine inside it is
+  const Expr e = GiNaC::sin(a + GiNaC::sin(b)) * GiNaC::cos(m) +
+                 K * GiNaC::sin(a + GiNaC::cos(b * b)) + GiNaC::cos(GiNaC::sin(K)) +
+                 GiNaC::pow(GiNaC::cos(m), 2) * GiNaC::sqrt(1 + GiNaC::sin(a));
+  GiNaC::exset found;
+  e.find(GiNaC::sin(GiNaC::wild()), found);
+  e.find(GiNaC::cos(GiNaC::wild()), found);
+  std::set<std::string> expected;
+  for (const Expr& f : found) expected.insert(canonical_text(f.op(0)));
+  std::set<std::string> got;
+  for (const Expr& x : trig_arguments(e)) got.insert(canonical_text(x));
+  EXPECT_EQ(got, expected);
+  EXPECT_EQ(got.count("b"), 0u);    // sin(b) inside a sine's argument
+  EXPECT_EQ(got.count("b^2"), 1u);  // cos(b²) inside a sine's argument
+  EXPECT_EQ(got.count("K"), 1u);    // sin(K) inside a cosine's argument
 }
 
 }  // namespace
