@@ -149,13 +149,25 @@ Expr hide_radicals(const Expr& e, GiNaC::exmap& back) {
 // √(r² cos²θ + r² sin²θ) becomes √(r²)).
 struct SimplifyInside : GiNaC::map_function {
   Expr operator()(const Expr& e) override {
+    if (e.nops() == 0) return e;
     if (GiNaC::is_a<GiNaC::power>(e) && !e.op(1).info(GiNaC::info_flags::integer)) {
       return GiNaC::pow(simplify(e.op(0)), e.op(1));
     }
     if (GiNaC::is_a<GiNaC::function>(e)) {
       return e.map([](const Expr& argument) { return simplify(argument); });
     }
-    return e.map(*this);
+    // a sum or a product made anew only where a part changed (GiNaC's map makes them anew)
+    const bool sum = GiNaC::is_exactly_a<GiNaC::add>(e);
+    if (!sum && !GiNaC::is_exactly_a<GiNaC::mul>(e)) return e.map(*this);
+    std::vector<Expr> parts(e.begin(), e.end());
+    bool changed = false;
+    for (Expr& part : parts) {
+      Expr inside = (*this)(part);
+      changed = changed || !GiNaC::are_ex_trivially_equal(inside, part);
+      part = std::move(inside);
+    }
+    if (!changed) return e;
+    return sum ? sum_of(parts) : Expr(GiNaC::dynallocate<GiNaC::mul>(parts));
   }
 };
 

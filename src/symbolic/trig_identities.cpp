@@ -8,6 +8,7 @@
 #include <string>
 #include <tuple>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "unidyn/symbolic/canonical_text.hpp"
@@ -266,31 +267,52 @@ Expr combine_angle_sums(const Expr& e) {
 
 namespace {
 
-// The degree of a term of an expanded sum in sin x and cos x together, or none where they sit
-// inside something else (a root, another function).
-std::optional<int> trig_degree(const Expr& term, const Expr& sine_x, const Expr& cosine_x) {
-  const auto factor_degree = [&](const Expr& f) -> std::optional<int> {
-    const auto is_trig_of_x = [&](const Expr& g) {
-      return g.is_equal(sine_x) || g.is_equal(cosine_x);
-    };
-    if (is_trig_of_x(f)) return 1;
-    if (is_exactly_a<GiNaC::power>(f) && is_trig_of_x(f.op(0)) &&
-        f.op(1).info(GiNaC::info_flags::nonnegint)) {
-      return GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_int();
+struct ExprHash {
+  std::size_t operator()(const Expr& x) const { return x.gethash(); }
+};
+
+// A term of an expanded sum by the arguments x of its sines and cosines: its degree in sin x and
+// cos x together, or none where they sit inside something else (a root, another function).
+class TrigDegrees {
+ public:
+  explicit TrigDegrees(const Expr& term) {
+    if (is_exactly_a<GiNaC::mul>(term)) {
+      for (std::size_t i = 0; i < term.nops(); ++i) add_factor(term.op(i));
+    } else {
+      add_factor(term);
     }
-    if (GiNaC::is_a<GiNaC::symbol>(f) || GiNaC::is_a<GiNaC::numeric>(f)) return 0;
-    if (f.has(sine_x) || f.has(cosine_x)) return std::nullopt;
-    return 0;
-  };
-  if (!is_exactly_a<GiNaC::mul>(term)) return factor_degree(term);
-  int d = 0;
-  for (std::size_t i = 0; i < term.nops(); ++i) {
-    const auto k = factor_degree(term.op(i));
-    if (!k) return std::nullopt;
-    d += *k;
   }
-  return d;
-}
+
+  std::optional<int> of(const Expr& x) const {
+    if (elsewhere_.count(x) != 0) return std::nullopt;
+    const auto found = degree_.find(x);
+    return found == degree_.end() ? 0 : found->second;
+  }
+
+ private:
+  void add_factor(const Expr& f) {
+    // sin x, cos x and their natural powers
+    const bool power = is_exactly_a<GiNaC::power>(f);
+    const Expr& base = power ? f.op(0) : f;
+    if ((is_sine(base) || is_cosine(base)) &&
+        (!power || f.op(1).info(GiNaC::info_flags::nonnegint))) {
+      degree_[base.op(0)] += power ? GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_int() : 1;
+      mark_inside(base.op(0));
+      return;
+    }
+    if (GiNaC::is_a<GiNaC::symbol>(f) || GiNaC::is_a<GiNaC::numeric>(f)) return;
+    mark_inside(f);
+  }
+
+  // every sine and cosine inside e, at any depth, sits elsewhere
+  void mark_inside(const Expr& e) {
+    if (is_sine(e) || is_cosine(e)) elsewhere_.insert(e.op(0));
+    for (std::size_t i = 0; i < e.nops(); ++i) mark_inside(e.op(i));
+  }
+
+  std::unordered_map<Expr, int, ExprHash, GiNaC::ex_is_equal> degree_;
+  std::unordered_set<Expr, ExprHash, GiNaC::ex_is_equal> elsewhere_;
+};
 
 // Whether no term of the expanded x has more than one sine or cosine factor (counted with their
 // powers) and none sits elsewhere: then each term's degree in every argument is 0 or 1, the top
@@ -312,15 +334,23 @@ bool linear_in_sines_and_cosines(const Expr& x) {
 Expr homogenize_trig(const Expr& e) {
   Expr x = expand_within_budget(e, "simplifying");
   if (linear_in_sines_and_cosines(x)) return x;
+  // the terms and their degrees in each argument's sine and cosine, found again when x changes
+  std::vector<Expr> terms;
+  std::vector<TrigDegrees> term_degrees;
+  const auto take_terms = [&] {
+    terms = terms_of(x);
+    term_degrees.clear();
+    for (const Expr& t : terms) term_degrees.emplace_back(t);
+  };
+  take_terms();
   for (const Expr& argument : trig_arguments(x)) {
     const Expr sine_x = GiNaC::sin(argument), cosine_x = GiNaC::cos(argument);
     // each term's degree in sin x and cos x together, and the highest of each parity (none where
     // they sit inside something else: not a polynomial in them)
-    const std::vector<Expr> terms = terms_of(x);
     std::vector<int> degrees;
     int top[2] = {-1, -1};
-    for (const Expr& t : terms) {
-      const auto d = trig_degree(t, sine_x, cosine_x);
+    for (const TrigDegrees& t : term_degrees) {
+      const auto d = t.of(argument);
       if (!d) break;
       degrees.push_back(*d);
       top[*d % 2] = std::max(top[*d % 2], *d);
@@ -340,7 +370,9 @@ Expr homogenize_trig(const Expr& e) {
         binomial = binomial * (m - i) / (i + 1);
       }
     }
-    if (below) x = sum_of(raised);
+    if (!below) continue;
+    x = sum_of(raised);
+    take_terms();
   }
   return x;
 }
