@@ -19,8 +19,9 @@ RateFreeParts rate_free_parts(const System& system, const Expr& T) {
   std::vector<Expr> rates;
   for (const auto& c : system.coordinates()) rates.push_back(c.rate);
   RateFreeParts parts;
-  for (const Expr& p : gradient(T, rates)) parts.b.push_back(p.subs(at_rest));
-  parts.T0 = T.subs(at_rest);
+  for (const Expr& p : gradient(T, rates))
+    parts.b.push_back(p.subs(at_rest, GiNaC::subs_options::no_pattern));
+  parts.T0 = T.subs(at_rest, GiNaC::subs_options::no_pattern);
   return parts;
 }
 

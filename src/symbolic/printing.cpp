@@ -38,6 +38,10 @@ bool better(const Sized& candidate, const Sized& best) {
 }
 
 // Pairs (v, w) of the sine and cosine symbols of one argument, v the one reduced.
+// Substitutions of symbols and of whole sines and cosines, none a pattern with wildcards: the
+// map is looked up at each node (GiNaC otherwise tries to match every key at every node).
+constexpr unsigned kPlain = GiNaC::subs_options::no_pattern;
+
 using UnitCircles = std::vector<std::pair<GiNaC::symbol, GiNaC::symbol>>;
 
 // An expanded p with every v^k (k ≥ 2) of each pair (v, w) replaced by v^(k mod 2) (1 − w²)^⌊k/2⌋:
@@ -115,9 +119,9 @@ Expr canonical_trig_form(const Expr& p) {
     back[sc.back().first] = GiNaC::sin(x);
     back[sc.back().second] = GiNaC::cos(x);
   }
-  Expr reduced = expand_within_budget(p.subs(to_symbols), "simplifying");
+  Expr reduced = expand_within_budget(p.subs(to_symbols, kPlain), "simplifying");
   reduced = reduce_modulo_unit_circles(reduced, sc);
-  return expand_within_budget(reduced.subs(back), "simplifying");
+  return expand_within_budget(reduced.subs(back, kPlain), "simplifying");
 }
 
 // Replaces each radical b^(p/q) by r^p with one symbol r = b^(1/q) per base in its canonical form
@@ -237,7 +241,7 @@ Expr simplify_uncached(const Expr& e) {
   GiNaC::exmap radicals;
   if (const Expr hidden = hide_radicals(best.e, radicals); !radicals.empty()) best = Sized(hidden);
   const std::vector<Expr> arguments = trig_arguments(best.e);
-  if (arguments.empty()) return best.e.subs(radicals);
+  if (arguments.empty()) return best.e.subs(radicals, kPlain);
   std::vector<GiNaC::symbol> s, c;
   GiNaC::exmap to_symbols, back;
   for (const Expr& x : arguments) {
@@ -249,7 +253,7 @@ Expr simplify_uncached(const Expr& e) {
     back[c.back()] = GiNaC::cos(x);
   }
   // numer_denom normalises by itself; its sign is fixed by canonical_normal below
-  const Expr fraction = GiNaC::numer_denom(best.e.subs(to_symbols));
+  const Expr fraction = GiNaC::numer_denom(best.e.subs(to_symbols, kPlain));
   const Expr numerator = expand_within_budget(fraction.op(0), "simplifying"),
              denominator = expand_within_budget(fraction.op(1), "simplifying");
   const std::size_t n = arguments.size();
@@ -272,7 +276,7 @@ Expr simplify_uncached(const Expr& e) {
     if (!reduced_argument[i] && n <= 4) idle |= std::size_t{1} << i;
   }
   // a polynomial in which no sine or cosine is squared is its own remainder
-  if (!any && denominator.is_equal(1)) return best.e.subs(radicals);
+  if (!any && denominator.is_equal(1)) return best.e.subs(radicals, kPlain);
   // the reduction by one choice of sine or cosine per argument (bit i set: argument i in its
   // sine, up to four arguments; beyond, all in the sine or all in the cosine): its best form,
   // offered to `best`
@@ -285,7 +289,7 @@ Expr simplify_uncached(const Expr& e) {
     }
     const Expr num = reduce_modulo_unit_circles(numerator, pairs),
                den = reduce_modulo_unit_circles(denominator, pairs);
-    const Sized reduced(canonical_normal(num / den).subs(back));
+    const Sized reduced(canonical_normal(num / den).subs(back, kPlain));
     // a polynomial's remainder is expanded already (monomials in which the symbols became sines
     // and cosines); a fraction's, expanded, may be smaller
     Sized form = reduced;
@@ -322,7 +326,7 @@ Expr simplify_uncached(const Expr& e) {
       }
     }
   }
-  return best.e.subs(radicals);
+  return best.e.subs(radicals, kPlain);
 }
 
 }  // namespace
