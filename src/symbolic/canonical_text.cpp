@@ -402,11 +402,6 @@ int canonical_sign(const Expr& e) {
   return text_printer().sign_of(e);
 }
 
-// GiNaC's normal form n/d is unique up to the sign of both, which GiNaC fixes by a leading
-// coefficient in its own variable order: here by the canonical order instead.
-namespace {
-
-// Whether e divides by anything but numbers (a negative or fractional power of a non-number).
 bool has_denominator(const Expr& e) {
   if (is_exactly_a<GiNaC::power>(e) && !GiNaC::is_a<GiNaC::numeric>(e.op(0)) &&
       !e.op(1).info(GiNaC::info_flags::nonnegint)) {
@@ -418,8 +413,8 @@ bool has_denominator(const Expr& e) {
   return false;
 }
 
-}  // namespace
-
+// GiNaC's normal form n/d is unique up to the sign of both, which GiNaC fixes by a leading
+// coefficient in its own variable order: here by the canonical order instead.
 Expr canonical_normal(const Expr& e) {
   // a polynomial (sines and cosines counted as symbols) is its own normal form
   if (!has_denominator(e)) return e;

@@ -277,6 +277,8 @@ Expr simplify_uncached(const Expr& e) {
   }
   // a polynomial in which no sine or cosine is squared is its own remainder
   if (!any && denominator.is_equal(1)) return best.e.subs(radicals, kPlain);
+  // (the reductions neither make nor remove a denominator inside the numerator)
+  const bool polynomial = denominator.is_equal(1) && !has_denominator(numerator);
   // the reduction by one choice of sine or cosine per argument (bit i set: argument i in its
   // sine, up to four arguments; beyond, all in the sine or all in the cosine): its best form,
   // offered to `best`
@@ -289,7 +291,8 @@ Expr simplify_uncached(const Expr& e) {
     }
     const Expr num = reduce_modulo_unit_circles(numerator, pairs),
                den = reduce_modulo_unit_circles(denominator, pairs);
-    const Sized reduced(canonical_normal(num / den).subs(back, kPlain));
+    // (a polynomial's remainder is a polynomial: its own normal form)
+    const Sized reduced((polynomial ? num : canonical_normal(num / den)).subs(back, kPlain));
     // a polynomial's remainder is expanded already (monomials in which the symbols became sines
     // and cosines); a fraction's, expanded, may be smaller
     Sized form = reduced;

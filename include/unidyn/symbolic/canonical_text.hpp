@@ -43,4 +43,8 @@ int canonical_sign(const Expr& e);
 // number.
 Expr canonical_normal(const Expr& e);
 
+// Whether e divides by anything but numbers (a negative or fractional power of a non-number),
+// anywhere in it: where it does not, canonical_normal(e) is e.
+bool has_denominator(const Expr& e);
+
 }  // namespace unidyn
