@@ -50,6 +50,11 @@ std::vector<std::optional<int>> PolynomialDegrees::operator()(const Expr& p) con
         term_degree[found->second] += n;
         return;
       }
+      // another symbol, to a numeric power: none of the x_k
+      if (GiNaC::is_a<GiNaC::symbol>(base) && (!power || is_exactly_a<GiNaC::numeric>(f.op(1))) &&
+          index.find(base) == index.end()) {
+        return;
+      }
       // anything else: by GiNaC, for the symbols in it
       present.clear();
       find_symbols(f);
