@@ -37,11 +37,11 @@ bool better(const Sized& candidate, const Sized& best) {
   return !candidate.e.is_equal(best.e) && canonical_less(candidate.e, best.e);
 }
 
-// Pairs (v, w) of the sine and cosine symbols of one argument, v the one reduced.
 // Substitutions of symbols and of whole sines and cosines, none a pattern with wildcards: the
 // map is looked up at each node (GiNaC otherwise tries to match every key at every node).
 constexpr unsigned kPlain = GiNaC::subs_options::no_pattern;
 
+// Pairs (v, w) of the sine and cosine symbols of one argument, v the one reduced.
 using UnitCircles = std::vector<std::pair<GiNaC::symbol, GiNaC::symbol>>;
 
 // An expanded p with every v^k (k ≥ 2) of each pair (v, w) replaced by v^(k mod 2) (1 − w²)^⌊k/2⌋:
@@ -291,12 +291,11 @@ Expr simplify_uncached(const Expr& e) {
     }
     const Expr num = reduce_modulo_unit_circles(numerator, pairs),
                den = reduce_modulo_unit_circles(denominator, pairs);
-    // (a polynomial's remainder is a polynomial: its own normal form)
+    // a polynomial's remainder is its own normal form, and expanded already (monomials in which
+    // the symbols became sines and cosines); a fraction's, expanded, may be smaller
     const Sized reduced((polynomial ? num : canonical_normal(num / den)).subs(back, kPlain));
-    // a polynomial's remainder is expanded already (monomials in which the symbols became sines
-    // and cosines); a fraction's, expanded, may be smaller
     Sized form = reduced;
-    if (!den.is_equal(1)) {
+    if (!polynomial) {
       if (const Sized expanded(expand_within_budget(reduced.e, "simplifying"));
           better(expanded, reduced)) {
         form = expanded;
