@@ -31,27 +31,28 @@ struct Accumulator {
     }
   }
 
-  // Body b's rotation: ∂ω/∂q̇^i, J = Q J0 Qᵀ, and Ḣ⁰ = J ω̇⁰ + ω × J ω.
+  // Body b's rotation on its own basis e1, e2, e3 (Euler's equations): with ω0 = Qᵀ ω,
+  // ∂ω/∂q̇^i · J ∂ω/∂q̇^j = ∂ω0/∂q̇^i · J0 ∂ω0/∂q̇^j (J = Q J0 Qᵀ) and ∂ω/∂q̇^i · Ḣ⁰ =
+  // ∂ω0/∂q̇^i · (J0 ω̇0⁰ + ω0 × J0 ω0) (Qᵀ ω̇ = ω̇0): no products Q Qᵀ to reduce by sin² + cos² = 1.
   void rotation(std::size_t b) {
     const Configuration& config = system.configuration;
     const auto& q = system.coordinates();
     const std::size_t n = q.size();
-    const Body& body = system.bodies[b];
-    const GiNaC::matrix J = body.rotation.mul(body.inertia).mul(body.rotation.transpose());
-    const VectorExpr omega = system.angular_velocity(b);
-    const VectorExpr omega_dot0{config.convective_derivative(omega[0]),
-                                config.convective_derivative(omega[1]),
-                                config.convective_derivative(omega[2])};
-    const VectorExpr H_dot0 = times(J, omega_dot0) + cross(omega, times(J, omega));
+    const GiNaC::matrix& J0 = system.bodies[b].inertia;
+    const VectorExpr omega0 = system.body_angular_velocity(b);
+    const VectorExpr omega0_dot0{config.convective_derivative(omega0[0]),
+                                 config.convective_derivative(omega0[1]),
+                                 config.convective_derivative(omega0[2])};
+    const VectorExpr H0_dot0 = times(J0, omega0_dot0) + cross(omega0, times(J0, omega0));
     std::vector<VectorExpr> partial(n), J_partial(n);
     for (std::size_t i = 0; i < n; ++i) {
-      partial[i] = diff(omega, q[i].rate);
-      J_partial[i] = times(J, partial[i]);
+      partial[i] = diff(omega0, q[i].rate);
+      J_partial[i] = times(J0, partial[i]);
     }
     for (std::size_t i = 0; i < n; ++i) {
       if (is_zero(partial[i])) continue;
       for (std::size_t j = i; j < n; ++j) mass(i, j) += dot(partial[i], J_partial[j]);
-      convective[i] += dot(partial[i], H_dot0);
+      convective[i] += dot(partial[i], H0_dot0);
     }
   }
 
