@@ -2,13 +2,7 @@
 // the fuzz targets: CLN (Debian 1.3.6) leaks 26 bytes while it initialises, which must not count
 // as a leak, and the report of suppressions used must not reach standard error (the CLI's tests
 // read it).
-#if defined(__SANITIZE_ADDRESS__)
-#define UNIDYN_ADDRESS_SANITIZER 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define UNIDYN_ADDRESS_SANITIZER 1
-#endif
-#endif
+#include "sanitizers.hpp"
 
 #if defined(UNIDYN_ADDRESS_SANITIZER)
 extern "C" const char* __lsan_default_suppressions() {
