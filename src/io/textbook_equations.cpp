@@ -52,6 +52,11 @@ std::vector<std::string> texts(const std::vector<GroupedTerm>& terms, bool latex
   return out;
 }
 
+// The coefficients of a grouping, as they are (simplified afterwards, all at once).
+Expr as_it_is(const Expr& e) {
+  return e;
+}
+
 }  // namespace
 
 // One LaTeX equation of align: `lead`, the terms broken into lines of about 160 characters (each
@@ -85,13 +90,20 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
   // products of rates = Σ_k λ_k a_k^i), each constraint
   // M entry by entry, M_ji taken from M_ij where they are equal (M is symmetric)
   const std::size_t n = q.size();
-  ExprMatrix M(n, n);
+  std::vector<bool> mirrored(n * n, false);
+  std::vector<Expr> entries;
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) {
-      const bool mirrored =
+      mirrored[i * n + j] =
           j < i && vanishes_identically(eq.mass_matrix(i, j) - eq.mass_matrix(j, i)) == true;
-      M(i, j) = mirrored ? M(j, i) : textbook_simplify(eq.mass_matrix(i, j));
+      if (!mirrored[i * n + j]) entries.push_back(eq.mass_matrix(i, j));
     }
+  }
+  const std::vector<Expr> short_entries = textbook_simplify_all(entries);
+  ExprMatrix M(n, n);
+  for (std::size_t i = 0, k = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j)
+      M(i, j) = mirrored[i * n + j] ? M(j, i) : short_entries[k++];
   }
   // T and the convective terms read off the short M by the covariant form (4.30) where exact
   // evaluation shows them equal to the derived ones; else dug out of the derived expressions
@@ -99,30 +111,52 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
   const std::optional<Expr> quadratic = quadratic_kinetic_energy(system, eq, M);
   const std::vector<std::optional<Expr>> convective = covariant_convective_terms(system, eq, M);
   end_phase("print: convective terms (4.25)");
-  std::vector<GroupedTerm> T = group_by_monomials(quadratic.value_or(eq.kinetic_energy), rates);
-  std::vector<GroupedTerm> U{{textbook_simplify(eq.potential_energy), 1}};
-  end_phase("print: T and U");
-  std::vector<std::vector<GroupedTerm>> left(q.size()), right(q.size());
+  std::vector<GroupedTerm> T =
+      group_by_monomials(quadratic.value_or(eq.kinetic_energy), rates, as_it_is);
+  std::vector<GroupedTerm> U{{eq.potential_energy, 1}};
+  end_phase("print: T and U, grouped");
+  // each equation's left side: its row of M (simplified already), then −f_i's terms
+  std::vector<std::vector<GroupedTerm>> left(q.size()), forcing(q.size()), right(q.size());
   for (std::size_t i = 0; i < q.size(); ++i) {
-    for (std::size_t j = 0; j < q.size(); ++j) {
-      if (!M(i, j).is_zero()) left[i].push_back({M(i, j), accelerations[j]});
-    }
     // −f_i = c_i + ∂U/∂q^i − Φ_i
     const Expr minus_forcing =
         convective[i]
             ? *convective[i] + derivative(eq.potential_energy, q[i].value) - eq.generalized_force[i]
             : -eq.forcing[i];
-    for (GroupedTerm& t : group_by_monomials(minus_forcing, rates)) left[i].push_back(t);
+    forcing[i] = group_by_monomials(minus_forcing, rates, as_it_is);
     Expr sum = 0;
     for (std::size_t k = 0; k < system.constraints.size(); ++k) {
       sum += multipliers[k] * eq.constraint_matrix(k, i);
     }
-    right[i] = group_by_monomials(sum, multipliers);
+    right[i] = group_by_monomials(sum, multipliers, as_it_is);
   }
-  end_phase("print: equations, grouped");
   std::vector<GroupedTerm> psi;
-  for (const auto& c : system.constraints) psi.push_back({textbook_simplify(c.expression), 1});
-  end_phase("print: constraints");
+  for (const auto& c : system.constraints) psi.push_back({c.expression, 1});
+  end_phase("print: equations, grouped");
+  // every coefficient in the book's form at once (M's known already), the vanishing ones dropped
+  std::vector<std::vector<GroupedTerm>*> groups{&T, &U, &psi};
+  for (auto* sides : {&forcing, &right}) {
+    for (auto& group : *sides) groups.push_back(&group);
+  }
+  std::vector<Expr> coefficients;
+  for (const auto* group : groups) {
+    for (const GroupedTerm& t : *group) coefficients.push_back(t.coefficient);
+  }
+  const std::vector<Expr> short_coefficients = textbook_simplify_all(coefficients);
+  std::size_t next = 0;
+  for (auto* group : groups) {
+    for (GroupedTerm& t : *group) t.coefficient = short_coefficients[next++];
+    // (U and the constraints keep their one term, 0 or not)
+    if (group == &U || group == &psi) continue;
+    std::erase_if(*group, [](const GroupedTerm& t) { return t.coefficient.is_zero(); });
+  }
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    for (std::size_t j = 0; j < q.size(); ++j) {
+      if (!M(i, j).is_zero()) left[i].push_back({M(i, j), accelerations[j]});
+    }
+    left[i].insert(left[i].end(), forcing[i].begin(), forcing[i].end());
+  }
+  end_phase("print: coefficients (simplified)");
   // --form zees: the coefficients' repeated subexpressions named z1, z2, …
   std::vector<GroupedTerm*> all;
   for (auto* group : {&T, &U, &psi}) {
@@ -135,9 +169,9 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
   }
   Intermediates z;
   if (intermediates) {
-    std::vector<Expr> coefficients;
-    for (const GroupedTerm* t : all) coefficients.push_back(t->coefficient);
-    z = common_subexpressions(coefficients);
+    std::vector<Expr> printed;
+    for (const GroupedTerm* t : all) printed.push_back(t->coefficient);
+    z = common_subexpressions(printed);
     for (std::size_t k = 0; k < all.size(); ++k) all[k]->coefficient = z.expressions[k];
   }
   const std::string U_text =

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 #include <unordered_map>
 
@@ -202,21 +203,39 @@ std::size_t expression_size(const Expr& e) {
   return size;
 }
 
-Expr remembered(const Expr& e, Expr (*f)(const Expr&)) {
-  // equal expressions by GiNaC's hash and equality, one table per function; dropped when they
-  // grow past a bound
-  constexpr std::size_t kKept = 20000;
-  struct Hash {
-    std::size_t operator()(const Expr& x) const { return x.gethash(); }
-  };
-  using Table = std::unordered_map<Expr, Expr, Hash, GiNaC::ex_is_equal>;
+namespace {
+
+// The results kept for f: equal expressions by GiNaC's hash and equality, one table per function;
+// dropped when they grow past a bound.
+constexpr std::size_t kKept = 20000;
+struct Hash {
+  std::size_t operator()(const Expr& x) const { return x.gethash(); }
+};
+using Table = std::unordered_map<Expr, Expr, Hash, GiNaC::ex_is_equal>;
+Table& remembered_by(Expr (*f)(const Expr&)) {
   thread_local std::map<Expr (*)(const Expr&), Table> tables;
-  Table& table = tables[f];
-  if (const auto found = table.find(e); found != table.end()) return found->second;
+  return tables[f];
+}
+
+}  // namespace
+
+Expr remembered(const Expr& e, Expr (*f)(const Expr&)) {
+  if (const std::optional<Expr> known = recalled(e, f)) return *known;
   const Expr result = f(e);
+  remember(e, f, result);
+  return result;
+}
+
+void remember(const Expr& e, Expr (*f)(const Expr&), const Expr& result) {
+  Table& table = remembered_by(f);
   if (table.size() >= kKept) table.clear();
   table.emplace(e, result);
-  return result;
+}
+
+std::optional<Expr> recalled(const Expr& e, Expr (*f)(const Expr&)) {
+  const Table& table = remembered_by(f);
+  if (const auto found = table.find(e); found != table.end()) return found->second;
+  return std::nullopt;
 }
 
 Expr simplify(const Expr& e) {

@@ -6,12 +6,14 @@
 #include <deque>
 #include <map>
 #include <numeric>
+#include <unordered_set>
 
 #include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/common_factor.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/polynomial_degrees.hpp"
 #include "unidyn/symbolic/printing.hpp"
+#include "unidyn/symbolic/process_map.hpp"
 #include "unidyn/symbolic/trig_identities.hpp"
 
 namespace unidyn {
@@ -46,6 +48,25 @@ Expr textbook_simplify_uncached(const Expr& e);
 
 Expr textbook_simplify(const Expr& e) {
   return remembered(e, textbook_simplify_uncached);
+}
+
+std::vector<Expr> textbook_simplify_all(const std::vector<Expr>& es) {
+  // the ones not met before, each once, shared among the processes; then all remembered
+  struct Hash {
+    std::size_t operator()(const Expr& x) const { return x.gethash(); }
+  };
+  std::unordered_set<Expr, Hash, GiNaC::ex_is_equal> met;
+  std::vector<Expr> fresh;
+  for (const Expr& e : es) {
+    if (!recalled(e, textbook_simplify_uncached) && met.insert(e).second) fresh.push_back(e);
+  }
+  const std::vector<Expr> simple = map_in_processes(fresh, textbook_simplify_uncached);
+  for (std::size_t i = 0; i < fresh.size(); ++i) {
+    remember(fresh[i], textbook_simplify_uncached, simple[i]);
+  }
+  std::vector<Expr> out;
+  for (const Expr& e : es) out.push_back(textbook_simplify(e));
+  return out;
 }
 
 namespace {

@@ -1,6 +1,7 @@
 // Readable equations: simplification for display, and text / LaTeX printing.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,10 @@ Expr simplify(const Expr& e);
 // f(e), computed once for equal expressions (in this thread; up to a bound of kept results): for
 // the simplifications, which meet the same coefficient again and again.
 Expr remembered(const Expr& e, Expr (*f)(const Expr&));
+// f(e) as remembered, if it is; and `result` remembered as f(e) (computed elsewhere: in another
+// process, symbolic/process_map.hpp).
+std::optional<Expr> recalled(const Expr& e, Expr (*f)(const Expr&));
+void remember(const Expr& e, Expr (*f)(const Expr&), const Expr& result);
 
 // Collects an expression in the given symbols (e.g. the accelerations) after simplifying.
 Expr collect_in(const Expr& e, const std::vector<Expr>& symbols);

@@ -15,6 +15,9 @@ namespace unidyn {
 // writes inertia about a turning axis, rather than C + (A − C) sin²θ) is preferred while it is at
 // most 1.5 times as long as the shortest.
 Expr textbook_simplify(const Expr& e);
+// textbook_simplify of each, the work shared among processes (symbolic/process_map.hpp), every
+// result remembered for later calls.
+std::vector<Expr> textbook_simplify_all(const std::vector<Expr>& es);
 
 // A sum as Σ coefficient × monomial over the monomials in `symbols` it contains (1 for the part
 // free of them), each coefficient simplified by `simplifier` (textbook_simplify unless given),
