@@ -616,6 +616,9 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.derive->add_flag("--timings", c.timings, "each phase's time on standard error");
   c.derive->add_flag("--reduced", c.reduced,
                      "approach II: eliminate the constraints that can be solved for a coordinate");
+  c.derive->footer(
+      "The textbook form's coefficients are simplified by one process per core; the environment's "
+      "UNIDYN_PROCESSES=N sets how many.");
 
   c.simulate = app.add_subcommand("simulate", "Simulate a model: CSV rows and a run summary");
   c.simulate->add_option("model", c.model, "MODEL file or bundled model name")->required();

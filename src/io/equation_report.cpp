@@ -53,6 +53,26 @@ std::pair<Expr, Expr> lagrange_row(const System& system, const EquationsOfMotion
           simplified_by_monomials(eq.forcing[i] + constraint_terms(system, eq, i), symbols)};
 }
 
+// Everything lagrange_row, T, U and the constraints simplify, simplified at once (the work shared
+// among processes, the results remembered for them).
+void simplify_lagrange_rows(const System& system, const EquationsOfMotion& eq) {
+  std::vector<Expr> all = eq.mass_matrix.data;
+  std::vector<Expr> symbols = rates(system);
+  for (const auto& c : system.constraints) {
+    symbols.push_back(c.multiplier);
+    all.push_back(c.expression);
+  }
+  const auto coefficients = [&all](const Expr& e, const std::vector<Expr>& in) {
+    for (const GroupedTerm& t : group_by_monomials(e, in, as_it_is)) all.push_back(t.coefficient);
+  };
+  for (std::size_t i = 0; i < system.coordinates().size(); ++i) {
+    coefficients(eq.forcing[i] + constraint_terms(system, eq, i), symbols);
+  }
+  coefficients(eq.kinetic_energy, rates(system));
+  all.push_back(eq.potential_energy);
+  simplify_all(all);
+}
+
 // A vector as "[x, y, z]" in text or LaTeX.
 std::string render_vector(const VectorExpr& v, bool latex) {
   std::string text = latex ? "\\begin{bmatrix}" : "[";
@@ -90,6 +110,7 @@ void write_lagrange(std::ostream& out, const System& system, const EquationsOfMo
     write_lagrange_json(out, system, eq);
     return;
   }
+  simplify_lagrange_rows(system, eq);
 
   if (format == EquationFormat::latex) {
     out << "% " << system.name << ": Lagrange's equations, M q'' = f + A^T lambda\n";

@@ -36,6 +36,14 @@ std::string number(const std::optional<double>& x) {
 void write_lagrange_json(std::ostream& out, const System& system, const EquationsOfMotion& eq) {
   const auto& q = system.coordinates();
   const GiNaC::exmap values = system.parameter_values();
+  // every expression simplified at once, the work shared among processes (then remembered)
+  std::vector<Expr> all{eq.kinetic_energy, eq.potential_energy};
+  all.insert(all.end(), eq.mass_matrix.data.begin(), eq.mass_matrix.data.end());
+  all.insert(all.end(), eq.forcing.begin(), eq.forcing.end());
+  all.insert(all.end(), eq.constraint_matrix.data.begin(), eq.constraint_matrix.data.end());
+  all.insert(all.end(), eq.constraint_velocity_term.begin(), eq.constraint_velocity_term.end());
+  all.insert(all.end(), eq.constraint_bias.begin(), eq.constraint_bias.end());
+  simplify_all(all);
   out << "{\n  \"name\": " << quoted(system.name) << ",\n  \"method\": \"lagrange\",\n"
       << "  \"notation\": \"sympy: ** for powers; the rate of q is q_d, its acceleration q_dd, the "
          "multiplier of constraint c lambda_c; M q_dd = f + A^T lambda\",\n";

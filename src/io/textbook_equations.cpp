@@ -52,11 +52,6 @@ std::vector<std::string> texts(const std::vector<GroupedTerm>& terms, bool latex
   return out;
 }
 
-// The coefficients of a grouping, as they are (simplified afterwards, all at once).
-Expr as_it_is(const Expr& e) {
-  return e;
-}
-
 }  // namespace
 
 // One LaTeX equation of align: `lead`, the terms broken into lines of about 160 characters (each
@@ -87,9 +82,20 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
   }
   for (const auto& c : system.constraints) multipliers.push_back(c.multiplier);
   // every grouped term: T, U, each equation's left and right side (Σ_j M_ij q̈^j and −f_i by
-  // products of rates = Σ_k λ_k a_k^i), each constraint
-  // M entry by entry, M_ji taken from M_ij where they are equal (M is symmetric)
+  // products of rates = Σ_k λ_k a_k^i), each constraint; those free of M first
   const std::size_t n = q.size();
+  std::vector<GroupedTerm> U{{eq.potential_energy, 1}}, psi;
+  for (const auto& c : system.constraints) psi.push_back({c.expression, 1});
+  std::vector<std::vector<GroupedTerm>> right(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Expr sum = 0;
+    for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+      sum += multipliers[k] * eq.constraint_matrix(k, i);
+    }
+    right[i] = group_by_monomials(sum, multipliers, as_it_is);
+  }
+  // M entry by entry, M_ji taken from M_ij where they are equal (M is symmetric); simplified
+  // together with the coefficients free of M (so that the processes share more work at once)
   std::vector<bool> mirrored(n * n, false);
   std::vector<Expr> entries;
   for (std::size_t i = 0; i < n; ++i) {
@@ -99,41 +105,41 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
       if (!mirrored[i * n + j]) entries.push_back(eq.mass_matrix(i, j));
     }
   }
+  for (const auto* group : {&U, &psi}) {
+    for (const GroupedTerm& t : *group) entries.push_back(t.coefficient);
+  }
+  for (const auto& group : right) {
+    for (const GroupedTerm& t : group) entries.push_back(t.coefficient);
+  }
   const std::vector<Expr> short_entries = textbook_simplify_all(entries);
   ExprMatrix M(n, n);
   for (std::size_t i = 0, k = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j)
       M(i, j) = mirrored[i * n + j] ? M(j, i) : short_entries[k++];
   }
+
   // T and the convective terms read off the short M by the covariant form (4.30) where exact
   // evaluation shows them equal to the derived ones; else dug out of the derived expressions
-  end_phase("print: mass matrix");
+  end_phase("print: mass matrix, U, constraint terms");
   const std::optional<Expr> quadratic = quadratic_kinetic_energy(system, eq, M);
   const std::vector<std::optional<Expr>> convective = covariant_convective_terms(system, eq, M);
   end_phase("print: convective terms (4.25)");
   std::vector<GroupedTerm> T =
       group_by_monomials(quadratic.value_or(eq.kinetic_energy), rates, as_it_is);
-  std::vector<GroupedTerm> U{{eq.potential_energy, 1}};
-  end_phase("print: T and U, grouped");
+  end_phase("print: T grouped");
   // each equation's left side: its row of M (simplified already), then −f_i's terms
-  std::vector<std::vector<GroupedTerm>> left(q.size()), forcing(q.size()), right(q.size());
-  for (std::size_t i = 0; i < q.size(); ++i) {
+  std::vector<std::vector<GroupedTerm>> left(n), forcing(n);
+  for (std::size_t i = 0; i < n; ++i) {
     // −f_i = c_i + ∂U/∂q^i − Φ_i
     const Expr minus_forcing =
         convective[i]
             ? *convective[i] + derivative(eq.potential_energy, q[i].value) - eq.generalized_force[i]
             : -eq.forcing[i];
     forcing[i] = group_by_monomials(minus_forcing, rates, as_it_is);
-    Expr sum = 0;
-    for (std::size_t k = 0; k < system.constraints.size(); ++k) {
-      sum += multipliers[k] * eq.constraint_matrix(k, i);
-    }
-    right[i] = group_by_monomials(sum, multipliers, as_it_is);
   }
-  std::vector<GroupedTerm> psi;
-  for (const auto& c : system.constraints) psi.push_back({c.expression, 1});
   end_phase("print: equations, grouped");
-  // every coefficient in the book's form at once (M's known already), the vanishing ones dropped
+  // every coefficient in the book's form at once (M's and those free of M remembered from
+  // above), the vanishing ones dropped
   std::vector<std::vector<GroupedTerm>*> groups{&T, &U, &psi};
   for (auto* sides : {&forcing, &right}) {
     for (auto& group : *sides) groups.push_back(&group);

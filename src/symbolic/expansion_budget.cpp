@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "unidyn/symbolic/canonical_text.hpp"
+#include "unidyn/symbolic/expairs.hpp"
 
 namespace unidyn {
 namespace {
@@ -64,7 +65,36 @@ class Bound {
   std::unordered_map<const GiNaC::basic*, std::pair<Expr, double>> memo_;
 };
 
+// Whether base^exponent is a factor that GiNaC's expand leaves as it is: a power of a symbol, a
+// number, a constant or a function (whose arguments expand leaves alone), not of a sum (which it
+// multiplies out, or, for a negative exponent, expands inside) nor of anything else (left to it).
+bool expanded_factor(const Expr& base, const Expr& exponent) {
+  if (!GiNaC::is_exactly_a<GiNaC::numeric>(exponent)) return false;
+  return GiNaC::is_a<GiNaC::symbol>(base) || GiNaC::is_a<GiNaC::numeric>(base) ||
+         GiNaC::is_a<GiNaC::constant>(base) || GiNaC::is_a<GiNaC::function>(base);
+}
+
+// Whether a term (not a sum) is a monomial of such factors.
+bool expanded_term(const Expr& t) {
+  if (GiNaC::is_exactly_a<GiNaC::mul>(t)) {
+    for (const GiNaC::expair& p : expairs(t)) {
+      if (!expanded_factor(p.rest, p.coeff)) return false;
+    }
+    return true;
+  }
+  if (GiNaC::is_exactly_a<GiNaC::power>(t)) return expanded_factor(t.op(0), t.op(1));
+  return expanded_factor(t, 1);
+}
+
 }  // namespace
+
+bool is_expanded(const Expr& e) {
+  if (!GiNaC::is_exactly_a<GiNaC::add>(e)) return expanded_term(e);
+  for (const GiNaC::expair& p : expairs(e)) {
+    if (!expanded_term(p.rest)) return false;
+  }
+  return true;
+}
 
 double expanded_terms_bound(const Expr& e) {
   Bound bound;
@@ -142,6 +172,8 @@ void check_expansion_budget(const Expr& e, std::string_view what) {
 }
 
 Expr expand_within_budget(const Expr& e, std::string_view what) {
+  // a sum of monomials is its own expansion (GiNaC's expand would walk it to give it back)
+  if (is_expanded(e)) return e;
   // the structural bound is quick; when it allows, GiNaC's own expansion is safe
   if (expanded_terms_bound(e) <= kMaxExpandedTerms) return e.expand();
   return CheckedExpansion{what}(e);

@@ -4,6 +4,7 @@
 #include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/polynomial_degrees.hpp"
+#include "unidyn/symbolic/process_map.hpp"
 #include "unidyn/symbolic/trig_identities.hpp"
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <optional>
 #include <set>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace unidyn {
 namespace {
@@ -80,24 +82,41 @@ Expr reduce_modulo_unit_circles(const Expr& p, const UnitCircles& pairs) {
       terms.push_back(expand_within_budget(product, "simplifying"));
       return;
     }
-    std::vector<Expr> products{term};
+    // the pairs to reduce in this term (v^k, k ≥ 2), and the term with each such v^k lowered to
+    // v^(k mod 2); a term without any passes as it is
+    std::vector<std::size_t> in_term;
+    GiNaC::exvector lowering{term};
     for (std::size_t i = 0; i < reduced.size(); ++i) {
-      const auto& [v, w] = reduced[i];
       const int k = term_degrees[i].value_or(0);
       if (k < 2) continue;
-      const int j = k / 2;
-      std::vector<Expr> next;
-      for (const Expr& product : products) {
-        const Expr lowered = product / GiNaC::pow(v, k - k % 2);
-        GiNaC::numeric binomial = 1;  // C(j, r)
-        for (int r = 0; r <= j; ++r) {
-          next.push_back(lowered * (r % 2 ? -binomial : binomial) * GiNaC::pow(w, 2 * r));
-          binomial = binomial * (j - r) / (r + 1);
-        }
-      }
-      products = std::move(next);
+      in_term.push_back(i);
+      lowering.push_back(GiNaC::pow(reduced[i].first, -(k - k % 2)));
     }
-    terms.insert(terms.end(), products.begin(), products.end());
+    if (in_term.empty()) {
+      terms.push_back(term);
+      return;
+    }
+    const Expr lowered = GiNaC::dynallocate<GiNaC::mul>(lowering);
+    // every choice of r_i ∈ [0, j_i], j_i = ⌊k_i/2⌋: the lowered term × Π (−1)^r_i C(j_i, r_i)
+    // w_i^(2 r_i), each made as one product (GiNaC merges the factors at once)
+    std::vector<int> r(in_term.size(), 0);
+    for (;;) {
+      GiNaC::numeric number = 1;
+      GiNaC::exvector factors{lowered};
+      for (std::size_t a = 0; a < in_term.size(); ++a) {
+        const int j = term_degrees[in_term[a]].value_or(0) / 2;
+        number = number * GiNaC::binomial(GiNaC::numeric(j), GiNaC::numeric(r[a]));
+        if (r[a] % 2 != 0) number = -number;
+        if (r[a] > 0) factors.push_back(GiNaC::pow(reduced[in_term[a]].second, 2 * r[a]));
+      }
+      factors.push_back(number);
+      terms.push_back(GiNaC::dynallocate<GiNaC::mul>(factors));
+      // the next choice, the last pair's r turning fastest
+      std::size_t a = in_term.size();
+      while (a > 0 && r[a - 1] == term_degrees[in_term[a - 1]].value_or(0) / 2) r[--a] = 0;
+      if (a == 0) break;
+      ++r[a - 1];
+    }
   };
   if (GiNaC::is_exactly_a<GiNaC::add>(p)) {
     for (std::size_t i = 0; i < p.nops(); ++i) reduce_term(p.op(i));
@@ -129,16 +148,20 @@ Expr canonical_trig_form(const Expr& p) {
 // (so √u and 1/√u of one u, written two ways, become r and 1/r), recording r → b^(1/q) in `back`:
 // the reduction modulo s² + c² − 1 then sees polynomials.
 Expr hide_radicals(const Expr& e, GiNaC::exmap& back) {
-  GiNaC::exset powers;
-  e.find(GiNaC::pow(GiNaC::wild(0), GiNaC::wild(1)), powers);
-  const std::set<Expr, CanonicalLess> found(powers.begin(), powers.end());
+  // the radicals: powers to rational exponents that are not integers, found by one walk
+  std::set<Expr, CanonicalLess> found;
+  const auto find = [&found](const auto& self, const Expr& x) -> void {
+    if (GiNaC::is_exactly_a<GiNaC::power>(x) && x.op(1).info(GiNaC::info_flags::rational) &&
+        !x.op(1).info(GiNaC::info_flags::integer)) {
+      found.insert(x);
+    }
+    for (std::size_t i = 0; i < x.nops(); ++i) self(self, x.op(i));
+  };
+  find(find, e);
   std::map<Expr, GiNaC::symbol, CanonicalLess> roots;
   GiNaC::exmap hide;
   for (const Expr& power : found) {
-    const Expr exponent = power.op(1);
-    if (!exponent.info(GiNaC::info_flags::rational) || exponent.info(GiNaC::info_flags::integer))
-      continue;
-    const GiNaC::numeric r = GiNaC::ex_to<GiNaC::numeric>(exponent);
+    const GiNaC::numeric r = GiNaC::ex_to<GiNaC::numeric>(power.op(1));
     const Expr root = GiNaC::pow(canonical_trig_form(power.op(0)), GiNaC::numeric(1) / r.denom());
     auto it = roots.find(root);
     if (it == roots.end()) {
@@ -148,6 +171,15 @@ Expr hide_radicals(const Expr& e, GiNaC::exmap& back) {
     hide[power] = GiNaC::pow(it->second, r.numer());
   }
   return hide.empty() ? e : e.subs(hide);
+}
+
+// Whether every number in e is an integer.
+bool integer_numbers(const Expr& e) {
+  if (GiNaC::is_exactly_a<GiNaC::numeric>(e)) return e.info(GiNaC::info_flags::integer);
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    if (!integer_numbers(e.op(i))) return false;
+  }
+  return true;
 }
 
 // Simplifies what sits inside: function arguments and the bases of non-integer powers (so that
@@ -226,6 +258,24 @@ Expr remembered(const Expr& e, Expr (*f)(const Expr&)) {
   return result;
 }
 
+std::vector<Expr> remembered_all(const std::vector<Expr>& es, Expr (*f)(const Expr&)) {
+  // the ones not met before, each once, shared among the processes; then all remembered
+  std::unordered_set<Expr, Hash, GiNaC::ex_is_equal> met;
+  std::vector<Expr> fresh;
+  for (const Expr& e : es) {
+    if (!recalled(e, f) && met.insert(e).second) fresh.push_back(e);
+  }
+  const std::vector<Expr> results = map_in_processes(fresh, f);
+  for (std::size_t i = 0; i < fresh.size(); ++i) remember(fresh[i], f, results[i]);
+  std::vector<Expr> out;
+  for (const Expr& e : es) out.push_back(remembered(e, f));
+  return out;
+}
+
+std::vector<Expr> simplify_all(const std::vector<Expr>& es) {
+  return remembered_all(es, simplify_uncached);
+}
+
 void remember(const Expr& e, Expr (*f)(const Expr&), const Expr& result) {
   Table& table = remembered_by(f);
   if (table.size() >= kKept) table.clear();
@@ -271,8 +321,12 @@ Expr simplify_uncached(const Expr& e) {
     back[s.back()] = GiNaC::sin(x);
     back[c.back()] = GiNaC::cos(x);
   }
-  // numer_denom normalises by itself; its sign is fixed by canonical_normal below
-  const Expr fraction = GiNaC::numer_denom(best.e.subs(to_symbols, kPlain));
+  // numer_denom normalises by itself (its sign is fixed by canonical_normal below); a polynomial
+  // with integer coefficients is its own numerator, over 1 (numer_denom would walk it to say so)
+  const Expr in_symbols = best.e.subs(to_symbols, kPlain);
+  const Expr fraction = !has_denominator(in_symbols) && integer_numbers(in_symbols)
+                            ? Expr(GiNaC::lst{in_symbols, 1})
+                            : GiNaC::numer_denom(in_symbols);
   const Expr numerator = expand_within_budget(fraction.op(0), "simplifying"),
              denominator = expand_within_budget(fraction.op(1), "simplifying");
   const std::size_t n = arguments.size();

@@ -6,14 +6,12 @@
 #include <deque>
 #include <map>
 #include <numeric>
-#include <unordered_set>
 
 #include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/common_factor.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/polynomial_degrees.hpp"
 #include "unidyn/symbolic/printing.hpp"
-#include "unidyn/symbolic/process_map.hpp"
 #include "unidyn/symbolic/trig_identities.hpp"
 
 namespace unidyn {
@@ -51,22 +49,7 @@ Expr textbook_simplify(const Expr& e) {
 }
 
 std::vector<Expr> textbook_simplify_all(const std::vector<Expr>& es) {
-  // the ones not met before, each once, shared among the processes; then all remembered
-  struct Hash {
-    std::size_t operator()(const Expr& x) const { return x.gethash(); }
-  };
-  std::unordered_set<Expr, Hash, GiNaC::ex_is_equal> met;
-  std::vector<Expr> fresh;
-  for (const Expr& e : es) {
-    if (!recalled(e, textbook_simplify_uncached) && met.insert(e).second) fresh.push_back(e);
-  }
-  const std::vector<Expr> simple = map_in_processes(fresh, textbook_simplify_uncached);
-  for (std::size_t i = 0; i < fresh.size(); ++i) {
-    remember(fresh[i], textbook_simplify_uncached, simple[i]);
-  }
-  std::vector<Expr> out;
-  for (const Expr& e : es) out.push_back(textbook_simplify(e));
-  return out;
+  return remembered_all(es, textbook_simplify_uncached);
 }
 
 namespace {
@@ -128,6 +111,10 @@ Expr textbook_simplify_uncached(const Expr& e) {
 }
 
 }  // namespace
+
+Expr as_it_is(const Expr& e) {
+  return e;
+}
 
 std::vector<GroupedTerm> group_by_monomials(const Expr& e, const std::vector<Expr>& symbols,
                                             Expr (*simplifier)(const Expr&)) {

@@ -3,10 +3,13 @@
 // the bound is loose, and the refusal of expansions past the budget.
 #include "unidyn/symbolic/expansion_budget.hpp"
 
+#include "support/random_expressions.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
+#include <random>
 #include <vector>
 
 namespace unidyn {
@@ -19,6 +22,39 @@ std::size_t terms(const Expr& e) {
 // C(n, k)
 double choose(double n, double k) {
   return std::round(std::exp(std::lgamma(n + 1) - std::lgamma(k + 1) - std::lgamma(n - k + 1)));
+}
+
+// is_expanded says yes only where GiNaC's expand gives the expression back, node for node; and
+// says it of every expansion GiNaC makes of a polynomial in symbols and functions.
+TEST(ExpansionBudget, ExpandedIsWhatExpandGivesBack) {
+  std::mt19937 rng(20261128);
+  int expanded = 0;
+  for (int k = 0; k < 600; ++k) {
+    const Expr e = test::random_expression(rng, 3);
+    if (is_expanded(e)) {
+      ++expanded;
+      EXPECT_TRUE(e.expand().is_equal(e)) << e;
+    }
+  }
+  // every polynomial in symbols, sines and cosines is called expanded once GiNaC expanded it
+  const std::vector<Expr> atoms{test::q1, test::m, GiNaC::sin(test::q1), GiNaC::cos(test::q2),
+                                GiNaC::numeric(2, 3)};
+  std::uniform_int_distribution<std::size_t> pick(0, atoms.size() - 1);
+  for (int k = 0; k < 100; ++k) {
+    Expr p = 1;
+    for (int f = 0; f < 3; ++f) p *= atoms[pick(rng)] + atoms[pick(rng)] - atoms[pick(rng)];
+    EXPECT_TRUE(is_expanded(GiNaC::pow(p, 2).expand())) << p;
+  }
+  EXPECT_GE(expanded, 100);
+  using test::m;
+  using test::q1;
+  using test::q2;
+  const Expr s = GiNaC::sin(q1), c = GiNaC::cos(q2 + q1);
+  EXPECT_TRUE(is_expanded(2 * m * s * s * c - 3 * q2 / m + GiNaC::sin(GiNaC::pow(q1 + q2, 2)) + 5));
+  EXPECT_FALSE(is_expanded(m * (s + c)));
+  EXPECT_FALSE(is_expanded(GiNaC::pow(s + c, 2)));
+  EXPECT_FALSE(is_expanded(q1 + 1 / (s + c)));  // expand works inside a reciprocal's sum
+  EXPECT_FALSE(is_expanded(GiNaC::sqrt(q1 + q2)));
 }
 
 TEST(ExpansionBudget, BoundOfPowersOfSums) {

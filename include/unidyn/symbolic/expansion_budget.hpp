@@ -33,6 +33,10 @@ class ExpressionTooLarge : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+// Whether e is a sum of monomials (or one) in symbols, numbers, constants and functions: what
+// GiNaC's expand gives back as it is.
+bool is_expanded(const Expr& e);
+
 // e.expand(), or ExpressionTooLarge (naming what was being done) when one of its products would
 // make more than kMaxExpandedTerms terms. When expanded_terms_bound(e) is within the budget this
 // is GiNaC's expand(); otherwise the expansion is made one checked product at a time.

@@ -18,6 +18,9 @@ std::size_t expression_size(const Expr& e);
 // Every choice (the order of the arguments, ties in size, the sign of a fraction) follows the
 // canonical order, so the result is the same expression in every run.
 Expr simplify(const Expr& e);
+// simplify of each, the work shared among processes (symbolic/process_map.hpp), every result
+// remembered for later calls.
+std::vector<Expr> simplify_all(const std::vector<Expr>& es);
 
 // f(e), computed once for equal expressions (in this thread; up to a bound of kept results): for
 // the simplifications, which meet the same coefficient again and again.
@@ -26,6 +29,9 @@ Expr remembered(const Expr& e, Expr (*f)(const Expr&));
 // process, symbolic/process_map.hpp).
 std::optional<Expr> recalled(const Expr& e, Expr (*f)(const Expr&));
 void remember(const Expr& e, Expr (*f)(const Expr&), const Expr& result);
+// f of each of `es`: those not remembered computed at once by map_in_processes
+// (symbolic/process_map.hpp), each once, then remembered.
+std::vector<Expr> remembered_all(const std::vector<Expr>& es, Expr (*f)(const Expr&));
 
 // Collects an expression in the given symbols (e.g. the accelerations) after simplifying.
 Expr collect_in(const Expr& e, const std::vector<Expr>& symbols);

@@ -27,6 +27,8 @@ struct GroupedTerm {
   Expr coefficient;
   Expr monomial;
 };
+// (As `simplifier`: the coefficients left as they are, to be simplified afterwards all at once.)
+Expr as_it_is(const Expr& e);
 std::vector<GroupedTerm> group_by_monomials(const Expr& e, const std::vector<Expr>& symbols,
                                             Expr (*simplifier)(const Expr&) = textbook_simplify);
 
