@@ -1,6 +1,8 @@
 // Text and LaTeX of expressions with sums, products and signs in a canonical order.
 #include "unidyn/symbolic/canonical_text.hpp"
 
+#include "unidyn/symbolic/expairs.hpp"
+
 #include <algorithm>
 #include <map>
 #include <memory>
@@ -402,10 +404,32 @@ int canonical_sign(const Expr& e) {
   return text_printer().sign_of(e);
 }
 
-bool has_denominator(const Expr& e) {
-  if (is_exactly_a<GiNaC::power>(e) && !GiNaC::is_a<GiNaC::numeric>(e.op(0)) &&
-      !e.op(1).info(GiNaC::info_flags::nonnegint)) {
+namespace {
+
+// Whether base^exponent is a denominator, or has one inside.
+bool power_has_denominator(const Expr& base, const Expr& exponent) {
+  if (!GiNaC::is_a<GiNaC::numeric>(base) && !exponent.info(GiNaC::info_flags::nonnegint)) {
     return true;
+  }
+  return has_denominator(base) || has_denominator(exponent);
+}
+
+}  // namespace
+
+bool has_denominator(const Expr& e) {
+  if (is_exactly_a<GiNaC::power>(e)) return power_has_denominator(e.op(0), e.op(1));
+  // a sum's terms c·t and a product's factors t^c as GiNaC keeps them (c a number)
+  if (is_exactly_a<GiNaC::add>(e)) {
+    for (const GiNaC::expair& term : expairs(e)) {
+      if (has_denominator(term.rest)) return true;
+    }
+    return false;
+  }
+  if (is_exactly_a<GiNaC::mul>(e)) {
+    for (const GiNaC::expair& factor : expairs(e)) {
+      if (power_has_denominator(factor.rest, factor.coeff)) return true;
+    }
+    return false;
   }
   for (std::size_t i = 0; i < e.nops(); ++i) {
     if (has_denominator(e.op(i))) return true;

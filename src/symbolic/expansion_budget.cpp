@@ -32,21 +32,13 @@ class Bound {
     if (const auto it = memo_.find(node); it != memo_.end()) return it->second.second;
     double terms = 1;
     if (GiNaC::is_a<GiNaC::add>(e)) {
-      terms = 0;
-      for (const auto& term : e) terms += (*this)(term);
+      // the terms c·t as GiNaC keeps them (c a number), and the number term
+      terms = overall_coefficient(e).is_zero() ? 0 : 1;
+      for (const GiNaC::expair& term : expairs(e)) terms += (*this)(term.rest);
     } else if (GiNaC::is_a<GiNaC::mul>(e)) {
-      for (const auto& factor : e) terms *= (*this)(factor);
+      for (const GiNaC::expair& factor : expairs(e)) terms *= power(factor.rest, factor.coeff);
     } else if (GiNaC::is_a<GiNaC::power>(e)) {
-      const double k = (*this)(e.op(0));
-      const Expr exponent = e.op(1);
-      if (exponent.info(GiNaC::info_flags::posint) && k > 1) {
-        // the monomials of degree n in k terms: C(n + k − 1, k − 1)
-        const double n = GiNaC::ex_to<GiNaC::numeric>(exponent).to_double();
-        terms = multinomial_terms(n, k);
-        largest_power = std::max(largest_power, std::isfinite(terms) ? terms : kInfinity);
-      } else {
-        (*this)(exponent);
-      }
+      terms = power(e.op(0), e.op(1));
     } else {
       for (std::size_t i = 0; i < e.nops(); ++i) (*this)(e.op(i));  // a function's arguments
     }
@@ -60,6 +52,23 @@ class Bound {
   double largest_power = 1;
 
  private:
+  // The terms of base^exponent expanded: (a sum of k terms)^n has C(n + k − 1, k − 1); any other
+  // power is one term.
+  double power(const Expr& base, const Expr& exponent) {
+    if (exponent.is_equal(1)) return (*this)(base);
+    const double k = (*this)(base);
+    if (!exponent.info(GiNaC::info_flags::posint) || k <= 1) {
+      (*this)(exponent);
+      return 1;
+    }
+    const double n = GiNaC::ex_to<GiNaC::numeric>(exponent).to_double();
+    double terms = multinomial_terms(n, k);
+    if (!std::isfinite(terms)) terms = kInfinity;
+    largest_power = std::max(largest_power, terms);
+    largest = std::max(largest, terms);
+    return terms;
+  }
+
   // keyed by node, holding the node: the operands of a sum or product can be made on the fly
   // (c·x from a pair), and a freed node's address could come back for another
   std::unordered_map<const GiNaC::basic*, std::pair<Expr, double>> memo_;

@@ -5,6 +5,8 @@
 #include <set>
 #include <unordered_map>
 
+#include "unidyn/symbolic/expairs.hpp"
+
 namespace unidyn {
 
 using GiNaC::is_exactly_a;
@@ -35,27 +37,27 @@ std::vector<std::optional<int>> PolynomialDegrees::operator()(const Expr& p) con
     };
     walk(e, walk);
   };
-  // the degree of a sum: the highest of its terms'; of a product: the sum of its factors'
+  // the degree of a sum: the highest of its terms'; of a product: the sum of its factors' (read
+  // as GiNaC keeps them: a term c·t as t, a factor as base^exponent)
   const auto add_term = [&](const Expr& term) {
     std::fill(term_degree.begin(), term_degree.end(), 0);
-    const auto add_factor = [&](const Expr& f) {
-      if (is_exactly_a<GiNaC::numeric>(f)) return;
+    const auto add_factor = [&](const Expr& base, const Expr& exponent) {
+      if (is_exactly_a<GiNaC::numeric>(base)) return;
       // x or x^n, n an integer
-      const bool power = is_exactly_a<GiNaC::power>(f);
-      const Expr base = power ? f.op(0) : f;
       if (const auto found = index.find(base);
-          found != index.end() && (!power || f.op(1).info(GiNaC::info_flags::integer))) {
-        const int n = power ? static_cast<int>(GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_int()) : 1;
+          found != index.end() && exponent.info(GiNaC::info_flags::integer)) {
+        const int n = static_cast<int>(GiNaC::ex_to<GiNaC::numeric>(exponent).to_int());
         if (n < 0) polynomial[found->second] = false;
         term_degree[found->second] += n;
         return;
       }
       // another symbol, to a numeric power: none of the x_k
-      if (GiNaC::is_a<GiNaC::symbol>(base) && (!power || is_exactly_a<GiNaC::numeric>(f.op(1))) &&
+      if (GiNaC::is_a<GiNaC::symbol>(base) && is_exactly_a<GiNaC::numeric>(exponent) &&
           index.find(base) == index.end()) {
         return;
       }
       // anything else: by GiNaC, for the symbols in it
+      const Expr f = exponent.is_equal(1) ? base : GiNaC::pow(base, exponent);
       present.clear();
       find_symbols(f);
       for (const std::size_t k : present) {
@@ -68,14 +70,17 @@ std::vector<std::optional<int>> PolynomialDegrees::operator()(const Expr& p) con
       }
     };
     if (is_exactly_a<GiNaC::mul>(term)) {
-      for (std::size_t i = 0; i < term.nops(); ++i) add_factor(term.op(i));
+      for (const GiNaC::expair& factor : expairs(term)) add_factor(factor.rest, factor.coeff);
+    } else if (is_exactly_a<GiNaC::power>(term)) {
+      add_factor(term.op(0), term.op(1));
     } else {
-      add_factor(term);
+      add_factor(term, 1);
     }
     for (std::size_t k = 0; k < xs.size(); ++k) degree[k] = std::max(degree[k], term_degree[k]);
   };
   if (is_exactly_a<GiNaC::add>(p)) {
-    for (std::size_t i = 0; i < p.nops(); ++i) add_term(p.op(i));
+    for (const GiNaC::expair& term : expairs(p)) add_term(term.rest);
+    // (the sum's number term: degree 0 in every x_k)
   } else {
     add_term(p);
   }

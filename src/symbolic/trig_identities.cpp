@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "unidyn/symbolic/canonical_text.hpp"
+#include "unidyn/symbolic/expairs.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 
 namespace unidyn {
@@ -225,16 +226,20 @@ std::vector<Expr> trig_arguments(const Expr& e) {
   const auto less = [](const Expr& a, const Expr& b) { return canonical_less(a, b); };
   std::set<Expr, decltype(less)> arguments(less);
   std::set<std::pair<const GiNaC::basic*, int>> seen;
-  std::vector<Expr> kept;  // (the nodes walked, alive: op() makes some anew)
   const auto walk = [&](const Expr& x, bool sines, bool cosines, const auto& self) -> void {
     if (x.nops() == 0) return;
     if (!seen.emplace(&GiNaC::ex_to<GiNaC::basic>(x), int(sines) + 2 * int(cosines)).second) return;
-    kept.push_back(x);
     if ((sines && is_sine(x)) || (cosines && is_cosine(x))) {
       arguments.insert(x.op(0));
       sines = sines && !is_sine(x);
       cosines = cosines && !is_cosine(x);
       if (!sines && !cosines) return;
+    }
+    // a sum's or product's parts as GiNaC keeps them (nodes of the expression, not made anew by
+    // op(): their addresses stay theirs); their coefficients are numbers
+    if (is_exactly_a<GiNaC::add>(x) || is_exactly_a<GiNaC::mul>(x)) {
+      for (const GiNaC::expair& part : expairs(x)) self(part.rest, sines, cosines, self);
+      return;
     }
     for (std::size_t i = 0; i < x.nops(); ++i) self(x.op(i), sines, cosines, self);
   };
