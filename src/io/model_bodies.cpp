@@ -86,8 +86,13 @@ void ModelReader::read_bodies(const YAML::Node& node, System& system) {
     expect_state_only(spec["center"], center, system, "a centre of mass");
     system.bodies.back().center = center;
     expect_realisable_inertia(spec["inertia"], system.bodies.back().inertia, system);
-    expect_inertia_about_rotation_axes(spec["rotation"], system.bodies.size() - 1, system);
   }
+  // each body's ω (all at once: their simplification shared among processes), then whether a
+  // body turns about an axis along which it has no inertia
+  system.make_angular_velocities();
+  std::size_t b = 0;
+  for (const auto& item : node)
+    expect_inertia_about_rotation_axes(item.second["rotation"], b++, system);
 }
 
 // [A, B, C] principal moments along e1, e2, e3, or {tensor: [[..], [..], [..]]} (components on

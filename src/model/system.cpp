@@ -42,14 +42,32 @@ VectorExpr System::angular_velocity(std::size_t b) const {
       cached != angular_velocity_cache_.end() && Expr(cached->second.first).is_equal(Q)) {
     return cached->second.second;
   }
+  const VectorExpr omega = simplified(axial_rate(b));
+  angular_velocity_cache_.insert_or_assign(b, std::make_pair(Q, omega));
+  return omega;
+}
+
+VectorExpr System::axial_rate(std::size_t b) const {
+  const TensorExpr& Q = bodies[b].rotation;
   TensorExpr Q_rate(3, 3);
   for (unsigned i = 0; i < 3; ++i) {
     for (unsigned k = 0; k < 3; ++k) Q_rate(i, k) = configuration.total_derivative(Q(i, k));
   }
   // ω = axial(Q̇ Qᵀ)
-  const VectorExpr omega = simplified(axial_expr(Q_rate.mul(Q.transpose())));
-  angular_velocity_cache_.insert_or_assign(b, std::make_pair(Q, omega));
-  return omega;
+  return axial_expr(Q_rate.mul(Q.transpose()));
+}
+
+void System::make_angular_velocities() const {
+  std::vector<Expr> components;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const VectorExpr omega = axial_rate(b);
+    components.insert(components.end(), omega.c.begin(), omega.c.end());
+  }
+  const std::vector<Expr> simple = simplify_all(components);
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const VectorExpr omega{simple[3 * b], simple[3 * b + 1], simple[3 * b + 2]};
+    angular_velocity_cache_.insert_or_assign(b, std::make_pair(bodies[b].rotation, omega));
+  }
 }
 
 VectorExpr System::body_angular_velocity(std::size_t b) const {

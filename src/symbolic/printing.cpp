@@ -2,6 +2,7 @@
 #include "unidyn/symbolic/printing.hpp"
 
 #include "unidyn/symbolic/canonical_text.hpp"
+#include "unidyn/symbolic/expairs.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/polynomial_degrees.hpp"
 #include "unidyn/symbolic/process_map.hpp"
@@ -210,25 +211,51 @@ struct SimplifyInside : GiNaC::map_function {
 
 }  // namespace
 
+namespace {
+
+// The size of a factor base^exponent of a product: a power node over its base and exponent (one
+// node, a number), or the base alone.
+std::size_t factor_size(const Expr& base, const Expr& exponent) {
+  return exponent.is_equal(1) ? expression_size(base) : 2 + expression_size(base);
+}
+
+// The size of the product of `factors` (pairs base^exponent as GiNaC keeps them) and the number
+// c: a node over its factors and, unless c is ±1, c; a lone factor times ±1 is that factor.
+std::size_t product_size(const GiNaC::epvector& factors, const GiNaC::numeric& c) {
+  const bool unit = GiNaC::abs(c).is_equal(1);
+  std::size_t size = unit ? 1 : 2, only = 0;
+  for (const GiNaC::expair& f : factors) {
+    only = factor_size(f.rest, f.coeff);
+    size += only;
+  }
+  return factors.size() == 1 && unit ? only : size;
+}
+
+}  // namespace
+
 std::size_t expression_size(const Expr& e) {
   // a sign is not a node: −x counts as x, −(a − b) c as (b − a) c (GiNaC picks the sign of a sum
-  // by its own order of terms, which moves with the memory layout)
+  // by its own order of terms, which moves with the memory layout); sums and products read as
+  // GiNaC keeps them (a term c·t, a factor t^c), not made anew by op()
   if (GiNaC::is_exactly_a<GiNaC::mul>(e)) {
-    std::size_t size = 1, factors = 0;
-    bool unit = true;
-    Expr only;
-    for (std::size_t i = 0; i < e.nops(); ++i) {
-      const Expr factor = e.op(i);
-      if (GiNaC::is_exactly_a<GiNaC::numeric>(factor)) {
-        unit = unit && GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(factor)).is_equal(1);
-        if (!unit) ++size;
-        continue;
+    return product_size(expairs(e), GiNaC::ex_to<GiNaC::numeric>(overall_coefficient(e)));
+  }
+  if (GiNaC::is_exactly_a<GiNaC::add>(e)) {
+    // the sum's node, each term c·t (t alone when c is 1), and its number term
+    std::size_t size = overall_coefficient(e).is_zero() ? 1 : 2;
+    for (const GiNaC::expair& term : expairs(e)) {
+      const GiNaC::numeric& c = GiNaC::ex_to<GiNaC::numeric>(term.coeff);
+      if (c.is_equal(1)) {
+        size += expression_size(term.rest);
+      } else if (GiNaC::is_exactly_a<GiNaC::mul>(term.rest)) {
+        size += product_size(expairs(term.rest),
+                             c * GiNaC::ex_to<GiNaC::numeric>(overall_coefficient(term.rest)));
+      } else {
+        size +=
+            GiNaC::abs(c).is_equal(1) ? expression_size(term.rest) : 2 + expression_size(term.rest);
       }
-      ++factors;
-      only = factor;
-      size += expression_size(factor);
     }
-    return factors == 1 && unit ? expression_size(only) : size;
+    return size;
   }
   std::size_t size = 1;
   for (std::size_t i = 0; i < e.nops(); ++i) size += expression_size(e.op(i));

@@ -3,6 +3,7 @@
 // its own order of terms, which moves with the memory layout) measure the same.
 #include <gtest/gtest.h>
 
+#include "support/random_expressions.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn {
@@ -28,6 +29,41 @@ TEST(ExpressionSize, ASignIsNotANode) {
   ASSERT_TRUE((negated - turned).expand().is_zero());
   EXPECT_EQ(expression_size(negated), expression_size(turned));
   EXPECT_EQ(expression_size(negated + a), expression_size(turned + a));
+}
+
+// The definition through GiNaC's op(), which makes each term and factor as an expression of its
+// own: the oracle for the size read from GiNaC's pairs.
+std::size_t size_by_op(const Expr& e) {
+  if (GiNaC::is_exactly_a<GiNaC::mul>(e)) {
+    std::size_t size = 1, factors = 0;
+    bool unit = true;
+    Expr only;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      const Expr factor = e.op(i);
+      if (GiNaC::is_exactly_a<GiNaC::numeric>(factor)) {
+        unit = unit && GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(factor)).is_equal(1);
+        if (!unit) ++size;
+        continue;
+      }
+      ++factors;
+      only = factor;
+      size += size_by_op(factor);
+    }
+    return factors == 1 && unit ? size_by_op(only) : size;
+  }
+  std::size_t size = 1;
+  for (std::size_t i = 0; i < e.nops(); ++i) size += size_by_op(e.op(i));
+  return size;
+}
+
+TEST(ExpressionSize, TheSameAsByGiNaCsOperands) {
+  std::mt19937 rng(20261129);
+  for (int k = 0; k < 500; ++k) {
+    const Expr e = test::random_expression(rng, 4);
+    for (const Expr& x : {e, -3 * e, e.expand(), (2 * e - test::m).expand()}) {
+      EXPECT_EQ(expression_size(x), size_by_op(x)) << x;
+    }
+  }
 }
 
 }  // namespace

@@ -217,6 +217,9 @@ struct System {
   // Body b: ω = axial(Q̇ Qᵀ) (§6.4), simplified; its body components ω0 = Qᵀ ω; the body basis
   // vector e_k = Q E_k; the velocity of its centre; H = J ω about the centre (7.x), J = Q J0 Qᵀ.
   VectorExpr angular_velocity(std::size_t b) const;
+  // Every body's ω, made at once: their simplification shared among processes
+  // (symbolic/process_map.hpp); angular_velocity then finds them made.
+  void make_angular_velocities() const;
   VectorExpr body_angular_velocity(std::size_t b) const;
   VectorExpr body_basis_vector(std::size_t b, int k) const;
   VectorExpr center_velocity(std::size_t b) const;
@@ -236,6 +239,8 @@ struct System {
   GiNaC::exmap parameter_values() const;
 
  private:
+  // axial(Q̇ Qᵀ) of body b, not yet simplified.
+  VectorExpr axial_rate(std::size_t b) const;
   // ω of each body with the rotation it was derived from: the derivation asks for ω many times,
   // and a copy whose rotation was edited (approach II) derives it anew.
   mutable std::map<std::size_t, std::pair<TensorExpr, VectorExpr>> angular_velocity_cache_;
