@@ -44,7 +44,8 @@ std::vector<std::optional<Expr>> covariant_convective_terms(const System& system
     for (std::size_t j = 0; j < n; ++j) dM[i][j] = gradient(M(i, j), x);
     db[i] = gradient(parts.b[i], x);
   }
-  std::vector<std::optional<Expr>> rows;
+  // each row and its difference from the derived row's convective part, f_R = Φ_R − ∂U/∂q^R − c_R
+  std::vector<Expr> rows_c, differences;
   for (std::size_t R = 0; R < n; ++R) {
     Expr c = 0;
     for (std::size_t K = 0; K < n; ++K) {
@@ -60,12 +61,17 @@ std::vector<std::optional<Expr>> covariant_convective_terms(const System& system
       c += g * q[K].rate;
     }
     c += db[R][n] - derivative(parts.T0, q[R].value);
-    // the derived row's convective part: f_R = Φ_R − ∂U/∂q^R − c_R
     const Expr derived =
         eq.generalized_force[R] - derivative(eq.potential_energy, q[R].value) - eq.forcing[R];
-    rows.push_back(vanishes_identically(derived - c) == std::optional<bool>(true)
-                       ? std::optional<Expr>(c)
-                       : std::nullopt);
+    rows_c.push_back(c);
+    differences.push_back(derived - c);
+  }
+  // the rows shown equal by exact evaluation (all at once, shared among processes)
+  const std::vector<std::optional<bool>> equal = vanish_identically(differences);
+  std::vector<std::optional<Expr>> rows;
+  for (std::size_t R = 0; R < n; ++R) {
+    rows.push_back(equal[R] == std::optional<bool>(true) ? std::optional<Expr>(rows_c[R])
+                                                         : std::nullopt);
   }
   return rows;
 }

@@ -13,6 +13,7 @@
 
 #include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/printing.hpp"
+#include "unidyn/symbolic/process_map.hpp"
 
 namespace unidyn {
 namespace {
@@ -382,6 +383,27 @@ std::optional<bool> vanishes_identically(const Expr& e, int points) {
 bool identically_zero(const Expr& e) {
   if (const auto decided = vanishes_identically(e)) return *decided;
   return simplify(e).is_zero();
+}
+
+}  // namespace unidyn
+
+namespace unidyn {
+namespace {
+
+// vanishes_identically(e) as a number to travel between processes: 1 true, 0 false, −1 undecided.
+Expr vanishes_as_number(const Expr& e) {
+  const std::optional<bool> zero = vanishes_identically(e);
+  return zero ? Expr(*zero ? 1 : 0) : Expr(-1);
+}
+
+}  // namespace
+
+std::vector<std::optional<bool>> vanish_identically(const std::vector<Expr>& es) {
+  std::vector<std::optional<bool>> out;
+  for (const Expr& answer : map_in_processes(es, vanishes_as_number)) {
+    out.push_back(answer.is_equal(-1) ? std::nullopt : std::optional<bool>(answer.is_equal(1)));
+  }
+  return out;
 }
 
 }  // namespace unidyn

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "unidyn/symbolic/expression.hpp"
 
@@ -22,6 +23,8 @@ namespace unidyn {
 
 // true (zero at every point), false (not zero at a point: proven), or nothing (undecided).
 std::optional<bool> vanishes_identically(const Expr& e, int points = 3);
+// vanishes_identically of each, the work shared among processes (symbolic/process_map.hpp).
+std::vector<std::optional<bool>> vanish_identically(const std::vector<Expr>& es);
 
 // Whether e is identically zero: by the points where they decide, else by simplify (printing.hpp).
 bool identically_zero(const Expr& e);
