@@ -22,55 +22,61 @@ Expr constraint_terms(const System& system, const EquationsOfMotion& eq, std::si
   return sum;
 }
 
-// Σ c_k m_k over the monomials m_k in `symbols`, each coefficient c_k simplified by itself (an
-// expression as a whole took half a minute on the bicycle).
-Expr simplified_by_monomials(const Expr& e, const std::vector<Expr>& symbols) {
-  std::vector<Expr> terms;
-  for (const GroupedTerm& t : group_by_monomials(e, symbols, simplify)) {
-    terms.push_back(t.coefficient * t.monomial);
-  }
-  return sum_of(terms);
-}
-
 std::vector<Expr> rates(const System& system) {
   std::vector<Expr> symbols;
   for (const auto& q : system.coordinates()) symbols.push_back(q.rate);
   return symbols;
 }
 
-// One Lagrange row as (left side Σ M q̈, right side f + Σ λ a): each M_ij simplified, and each
-// coefficient of a product of rates and multipliers on the right.
-std::pair<Expr, Expr> lagrange_row(const System& system, const EquationsOfMotion& eq,
-                                   std::size_t i) {
+// Lagrange's equations as printed in matrix form: each row's left side Σ M_ij q̈^j and right side
+// f_i + Σ λ_k a_k^i, T, U and the constraints; every entry of M and every coefficient of a
+// product of rates and multipliers (on the right, in T) simplified by itself (an expression as a
+// whole took half a minute on the bicycle), all at once (the work shared among processes).
+struct MatrixForm {
+  std::vector<Expr> left, right, constraints;
+  Expr T, U;
+};
+
+MatrixForm matrix_form(const System& system, const EquationsOfMotion& eq) {
   const auto& q = system.coordinates();
-  std::vector<Expr> left;
-  for (std::size_t j = 0; j < q.size(); ++j) {
-    left.push_back(simplify(eq.mass_matrix(i, j)) * q[j].acceleration);
-  }
+  const std::size_t n = q.size();
   std::vector<Expr> symbols = rates(system);
   for (const auto& c : system.constraints) symbols.push_back(c.multiplier);
-  return {sum_of(left),
-          simplified_by_monomials(eq.forcing[i] + constraint_terms(system, eq, i), symbols)};
-}
-
-// Everything lagrange_row, T, U and the constraints simplify, simplified at once (the work shared
-// among processes, the results remembered for them).
-void simplify_lagrange_rows(const System& system, const EquationsOfMotion& eq) {
+  // the right sides, then T, grouped by monomials
+  std::vector<std::vector<GroupedTerm>> sums;
+  for (std::size_t i = 0; i < n; ++i) {
+    sums.push_back(
+        group_by_monomials(eq.forcing[i] + constraint_terms(system, eq, i), symbols, as_it_is));
+  }
+  sums.push_back(group_by_monomials(eq.kinetic_energy, rates(system), as_it_is));
+  // M, the constraints, U, the coefficients: simplified at once, read back in this order
   std::vector<Expr> all = eq.mass_matrix.data;
-  std::vector<Expr> symbols = rates(system);
-  for (const auto& c : system.constraints) {
-    symbols.push_back(c.multiplier);
-    all.push_back(c.expression);
-  }
-  const auto coefficients = [&all](const Expr& e, const std::vector<Expr>& in) {
-    for (const GroupedTerm& t : group_by_monomials(e, in, as_it_is)) all.push_back(t.coefficient);
-  };
-  for (std::size_t i = 0; i < system.coordinates().size(); ++i) {
-    coefficients(eq.forcing[i] + constraint_terms(system, eq, i), symbols);
-  }
-  coefficients(eq.kinetic_energy, rates(system));
+  for (const auto& c : system.constraints) all.push_back(c.expression);
   all.push_back(eq.potential_energy);
-  simplify_all(all);
+  for (const auto& sum : sums) {
+    for (const GroupedTerm& t : sum) all.push_back(t.coefficient);
+  }
+  const std::vector<Expr> simple = simplify_all(all);
+  std::size_t k = 0;
+  MatrixForm form;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<Expr> left;
+    for (std::size_t j = 0; j < n; ++j) left.push_back(simple[k++] * q[j].acceleration);
+    form.left.push_back(sum_of(left));
+  }
+  for (std::size_t c = 0; c < system.constraints.size(); ++c)
+    form.constraints.push_back(simple[k++]);
+  form.U = simple[k++];
+  for (const auto& sum : sums) {
+    std::vector<Expr> terms;
+    for (const GroupedTerm& t : sum) {
+      if (const Expr& c = simple[k++]; !c.is_zero()) terms.push_back(c * t.monomial);
+    }
+    form.right.push_back(sum_of(terms));
+  }
+  form.T = form.right.back();
+  form.right.pop_back();
+  return form;
 }
 
 // A vector as "[x, y, z]" in text or LaTeX.
@@ -110,39 +116,38 @@ void write_lagrange(std::ostream& out, const System& system, const EquationsOfMo
     write_lagrange_json(out, system, eq);
     return;
   }
-  simplify_lagrange_rows(system, eq);
+  const MatrixForm form = matrix_form(system, eq);
 
   if (format == EquationFormat::latex) {
     out << "% " << system.name << ": Lagrange's equations, M q'' = f + A^T lambda\n";
     out << "\\[\n\\begin{aligned}\n";
     for (std::size_t i = 0; i < q.size(); ++i) {
-      const auto [lhs, rhs] = lagrange_row(system, eq, i);
-      out << "  " << to_latex(lhs) << " &= " << to_latex(rhs) << " \\\\\n";
+      out << "  " << to_latex(form.left[i]) << " &= " << to_latex(form.right[i]) << " \\\\\n";
     }
-    for (const auto& c : constraints) {
-      out << "  " << to_latex(simplify(c.expression)) << " &= 0"
-          << (c.kind == Constraint::Kind::velocity ? " \\quad\\text{(velocity)}" : "") << " \\\\\n";
+    for (std::size_t k = 0; k < constraints.size(); ++k) {
+      out << "  " << to_latex(form.constraints[k]) << " &= 0"
+          << (constraints[k].kind == Constraint::Kind::velocity ? " \\quad\\text{(velocity)}" : "")
+          << " \\\\\n";
     }
-    out << "  T &= " << to_latex(simplified_by_monomials(eq.kinetic_energy, rates(system)))
-        << " \\\\\n";
-    out << "  U &= " << to_latex(simplify(eq.potential_energy)) << "\n\\end{aligned}\n\\]\n";
+    out << "  T &= " << to_latex(form.T) << " \\\\\n";
+    out << "  U &= " << to_latex(form.U) << "\n\\end{aligned}\n\\]\n";
     return;
   }
 
   out << system.name << ": Lagrange's equations"
       << (constraints.empty() ? "" : ", M q'' = f + A^T lambda (one multiplier per constraint)")
       << "\n";
-  out << "  T = " << render(simplified_by_monomials(eq.kinetic_energy, rates(system)), format)
-      << "\n";
-  out << "  U = " << render(simplify(eq.potential_energy), format) << "\n";
+  out << "  T = " << render(form.T, format) << "\n";
+  out << "  U = " << render(form.U, format) << "\n";
   for (std::size_t i = 0; i < q.size(); ++i) {
-    const auto [lhs, rhs] = lagrange_row(system, eq, i);
-    out << "  [" << q[i].name << "]  " << to_text(lhs) << " = " << to_text(rhs) << "\n";
+    out << "  [" << q[i].name << "]  " << to_text(form.left[i]) << " = " << to_text(form.right[i])
+        << "\n";
   }
-  for (const auto& c : constraints) {
+  for (std::size_t k = 0; k < constraints.size(); ++k) {
+    const Constraint& c = constraints[k];
     out << "  constraint " << c.name << " ("
         << (c.kind == Constraint::Kind::position ? "position" : "velocity")
-        << (c.unilateral ? ", unilateral" : "") << "): " << to_text(simplify(c.expression))
+        << (c.unilateral ? ", unilateral" : "") << "): " << to_text(form.constraints[k])
         << " = 0, multiplier " << c.multiplier << "\n";
   }
 }
