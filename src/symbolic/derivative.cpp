@@ -1,6 +1,8 @@
 // Partial derivatives by the rules of the calculus, without GiNaC's exception per function.
 #include "unidyn/symbolic/derivative.hpp"
 
+#include "unidyn/symbolic/trig_functions.hpp"
+
 #include <vector>
 
 namespace unidyn {
@@ -73,8 +75,8 @@ Partials partials(const Expr& e, const std::vector<Expr>& xs) {
   }
   // sin(u)' = cos(u) u', cos(u)' = −sin(u) u'
   const Expr u = e.nops() == 1 ? e.op(0) : Expr(0);
-  if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(e)) return chain(u, [&] { return GiNaC::cos(u); });
-  if (GiNaC::is_the_function<GiNaC::cos_SERIAL>(e)) return chain(u, [&] { return -GiNaC::sin(u); });
+  if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(e)) return chain(u, [&] { return cosine_of(u); });
+  if (GiNaC::is_the_function<GiNaC::cos_SERIAL>(e)) return chain(u, [&] { return -sine_of(u); });
   // anything else by GiNaC
   Partials p;
   for (std::size_t k = 0; k < xs.size(); ++k) {

@@ -6,6 +6,7 @@
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/polynomial_degrees.hpp"
 #include "unidyn/symbolic/process_map.hpp"
+#include "unidyn/symbolic/trig_functions.hpp"
 #include "unidyn/symbolic/trig_identities.hpp"
 
 #include <algorithm>
@@ -135,10 +136,10 @@ Expr canonical_trig_form(const Expr& p) {
   std::vector<std::pair<GiNaC::symbol, GiNaC::symbol>> sc;
   for (const Expr& x : arguments) {
     sc.emplace_back();
-    to_symbols[GiNaC::sin(x)] = sc.back().first;
-    to_symbols[GiNaC::cos(x)] = sc.back().second;
-    back[sc.back().first] = GiNaC::sin(x);
-    back[sc.back().second] = GiNaC::cos(x);
+    to_symbols[sine_of(x)] = sc.back().first;
+    to_symbols[cosine_of(x)] = sc.back().second;
+    back[sc.back().first] = sine_of(x);
+    back[sc.back().second] = cosine_of(x);
   }
   Expr reduced = expand_within_budget(p.subs(to_symbols, kPlain), "simplifying");
   reduced = reduce_modulo_unit_circles(reduced, sc);
@@ -343,10 +344,10 @@ Expr simplify_uncached(const Expr& e) {
   for (const Expr& x : arguments) {
     s.emplace_back();
     c.emplace_back();
-    to_symbols[GiNaC::sin(x)] = s.back();
-    to_symbols[GiNaC::cos(x)] = c.back();
-    back[s.back()] = GiNaC::sin(x);
-    back[c.back()] = GiNaC::cos(x);
+    to_symbols[sine_of(x)] = s.back();
+    to_symbols[cosine_of(x)] = c.back();
+    back[s.back()] = sine_of(x);
+    back[c.back()] = cosine_of(x);
   }
   // numer_denom normalises by itself (its sign is fixed by canonical_normal below); a polynomial
   // with integer coefficients is its own numerator, over 1 (numer_denom would walk it to say so)

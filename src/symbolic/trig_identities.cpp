@@ -14,6 +14,7 @@
 #include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/expairs.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
+#include "unidyn/symbolic/trig_functions.hpp"
 
 namespace unidyn {
 namespace {
@@ -119,10 +120,10 @@ bool reads_negated(const Expr& x) {
 }
 // cos x and sin x with the argument's sign as it reads best: cos(−x) = cos x, sin(−x) = −sin x.
 Expr cosine(const Expr& x) {
-  return GiNaC::cos(reads_negated(x) ? -x : x);
+  return cosine_of(reads_negated(x) ? -x : x);
 }
 Expr sine(const Expr& x) {
-  return reads_negated(x) ? -GiNaC::sin(-x) : GiNaC::sin(x);
+  return reads_negated(x) ? -sine_of(-x) : sine_of(x);
 }
 
 // Two readings that combine into one term, or none:
@@ -349,7 +350,7 @@ Expr homogenize_trig(const Expr& e) {
   };
   take_terms();
   for (const Expr& argument : trig_arguments(x)) {
-    const Expr sine_x = GiNaC::sin(argument), cosine_x = GiNaC::cos(argument);
+    const Expr sine_x = sine_of(argument), cosine_x = cosine_of(argument);
     // each term's degree in sin x and cos x together, and the highest of each parity (none where
     // they sit inside something else: not a polynomial in them)
     std::vector<int> degrees;
