@@ -336,8 +336,8 @@ class Bench:
                  "a fifth from minute to minute); the simplification shares its work among one "
                  "process per core (the column 'one process': `UNIDYN_PROCESSES=1`); "
                  "`derive --format c`: the operations of "
-                 "M, f and the constraint rows after common-subexpression elimination (Kane's "
-                 "form). Goals of issue 13: check and derive of the bicycle ≤ 2 s, of the 10-link "
+                 "M, f and the constraint rows after common factors are taken out of sums and "
+                 "common subexpressions are shared (Kane's form). Goals of issue 13: check and derive of the bicycle ≤ 2 s, of the 10-link "
                  "pendulum ≤ 0.5 s, ≤ 2 400 operations for the bicycle. A command past its time "
                  "limit shows as '>'.\n")
         self.say("| model | check | derive --form matrix | derive (textbook) | derive, one process "

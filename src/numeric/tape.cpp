@@ -1,7 +1,8 @@
 // Instruction tape: compilation of GiNaC expressions to a register program, and its evaluation.
 //
-// Compilation runs in passes: (1) expressions → instructions on virtual registers in SSA form,
-// with common subexpressions shared by GiNaC structural equality and by instruction value
+// Compilation runs in passes: (0) sums with their common factors taken out (the multivariate
+// Horner scheme, symbolic/horner_form.hpp); (1) expressions → instructions on virtual registers in
+// SSA form, with common subexpressions shared by GiNaC structural equality and by instruction value
 // numbering, constants folded; (2) sin and cos of one argument fused into sincos; (3) dead
 // instructions removed; (4) virtual registers mapped to reusable physical registers.
 #include "unidyn/numeric/tape.hpp"
@@ -20,6 +21,8 @@
 #include <tuple>
 #include <unordered_map>
 #include <utility>
+
+#include "unidyn/symbolic/horner_form.hpp"
 
 namespace unidyn {
 
@@ -739,12 +742,14 @@ void TapeWorkspace::reserve(const Tape& tape) {
 }
 
 Tape Tape::compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs) {
+  // Pass 0: fewer multiplications (the bicycle's M, f, A, b: 2 827 → 2 098 operations).
+  const std::vector<GiNaC::ex> factored = horner_form(outputs);
   // Pass 1, one output at a time so that errors can say which.
   Builder builder(inputs);
   std::vector<Value> values;
-  for (std::size_t k = 0; k < outputs.size(); ++k) {
+  for (std::size_t k = 0; k < factored.size(); ++k) {
     try {
-      values.push_back(builder.compile(outputs[k]));
+      values.push_back(builder.compile(factored[k]));
     } catch (const std::invalid_argument& error) {
       throw std::invalid_argument(std::string(error.what()) + " (in output " + std::to_string(k) +
                                   ")");

@@ -255,6 +255,18 @@ TEST(Tape, RepeatedSubexpressionIsEvaluatedOnce) {
   EXPECT_EQ(instructions(pow(t, 2) + pow(t, 3), in), 4u);
 }
 
+// Common factors come out of sums first (pass 0, symbolic/horner_form.hpp): x y + x z + x w is
+// x (y + z + w), 2 additions and 1 multiplication rather than 3 and 2; an expanded polynomial
+// evaluated that way keeps its value.
+TEST(Tape, CommonFactorsTakenOutOfSums) {
+  const Symbols s;
+  EXPECT_EQ(instructions(s.x * s.y + s.x * s.z + s.x * s.w, s.all()), 3u);
+  EXPECT_EQ(instructions(s.y / s.x + s.z / s.x, s.all()), 2u);  // (y + z)/x
+  expect_matches_ginac({GiNaC::expand(pow(s.x + s.y - s.z, 6)),
+                        GiNaC::expand((s.x + s.w) * pow(s.y - 1, 3) * (s.z + 2))},
+                       s.all(), 0.5, 1.5);
+}
+
 // Across outputs: {sin u, exp u, sin u + exp u} needs 5 instructions, not 3 + 3 + 5.
 TEST(Tape, SubexpressionsAreSharedAcrossOutputs) {
   const Symbols s;
