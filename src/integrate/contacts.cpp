@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "format.hpp"
+#include "unidyn/numeric/number_text.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {

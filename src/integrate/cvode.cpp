@@ -15,7 +15,7 @@
 #include <string>
 #include <utility>
 
-#include "format.hpp"
+#include "unidyn/numeric/number_text.hpp"
 
 namespace unidyn {
 namespace {

@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "dormand_prince_tableau.hpp"
-#include "format.hpp"
+#include "unidyn/numeric/number_text.hpp"
 
 namespace unidyn {
 namespace {

@@ -8,7 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "format.hpp"
+#include "unidyn/numeric/number_text.hpp"
 
 namespace unidyn {
 namespace {

@@ -5,7 +5,7 @@
 #include <Eigen/QR>
 #include <cmath>
 
-#include "format.hpp"
+#include "unidyn/numeric/number_text.hpp"
 #include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 

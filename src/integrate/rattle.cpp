@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "format.hpp"
+#include "unidyn/numeric/number_text.hpp"
 
 namespace unidyn {
 namespace {

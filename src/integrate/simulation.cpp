@@ -9,7 +9,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "format.hpp"
 #include "unidyn/equations/kane.hpp"
 #include "unidyn/integrate/contacts.hpp"
 #include "unidyn/integrate/cvode.hpp"
@@ -19,6 +18,7 @@
 #include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/integrate/rattle.hpp"
 #include "unidyn/integrate/rk4.hpp"
+#include "unidyn/numeric/number_text.hpp"
 #include "unidyn/rotation/euler_angles.hpp"
 #include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/real_value.hpp"
@@ -176,37 +176,6 @@ void watch_euler_charts(const System& system, double t, const Eigen::VectorXd& y
   }
 }
 
-// A body described by Euler angles must not start at their gimbal lock, where the angle rates of
-// a given ω do not exist and the mass matrix is singular: bad input, with the Euler set that is
-// most regular at that rotation (or Euler parameters, which have no lock) as the way out.
-void expect_no_gimbal_lock(const System& system, const Eigen::VectorXd& q) {
-  for (const Body& body : system.bodies) {
-    if (!body.chart) continue;
-    const auto& c = body.chart->coordinates;
-    const Vec3 angles(q[static_cast<Eigen::Index>(c[0])], q[static_cast<Eigen::Index>(c[1])],
-                      q[static_cast<Eigen::Index>(c[2])]);
-    if (std::abs(euler_basis_volume(body.chart->set, angles)) > kGimbalLockStop) continue;
-    const Tensor Q = rotation_tensor(body.chart->set, angles);
-    const EulerSet* best = &all_euler_sets().front();
-    double best_volume = -1;
-    for (const EulerSet& set : all_euler_sets()) {
-      const double volume = std::abs(euler_angles(set, Q).volume);
-      if (volume > best_volume) {
-        best_volume = volume;
-        best = &set;
-      }
-    }
-    const auto& names = system.coordinates();
-    throw std::invalid_argument(
-        "body '" + body.name + "' starts at the gimbal lock of its " + body.chart->set.name() +
-        " Euler angles (" + names[c[1]].name + " = " + detail::to_short_text(angles[1]) +
-        ", where only the sum or difference of " + names[c[0]].name + " and " + names[c[2]].name +
-        " is defined and the mass matrix is singular): start it elsewhere, or describe its "
-        "rotation with {euler: " +
-        best->name() + ", ...}, regular there, or with {quaternion: [e0, e1, e2, e3]}");
-  }
-}
-
 // The step of a fixed-step method: `step`, else output_step / 10, made a whole number of steps
 // per output interval.
 double fixed_step(const SimulationOptions& options) {
@@ -239,6 +208,37 @@ std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunct
 }
 
 }  // namespace
+
+void expect_no_gimbal_lock(const System& system, const Eigen::VectorXd& q, const std::string& state,
+                           const std::string& advice) {
+  for (const Body& body : system.bodies) {
+    if (!body.chart) continue;
+    const auto& c = body.chart->coordinates;
+    const Vec3 angles(q[static_cast<Eigen::Index>(c[0])], q[static_cast<Eigen::Index>(c[1])],
+                      q[static_cast<Eigen::Index>(c[2])]);
+    if (std::abs(euler_basis_volume(body.chart->set, angles)) > kGimbalLockStop) continue;
+    const Tensor Q = rotation_tensor(body.chart->set, angles);
+    const EulerSet* best = &all_euler_sets().front();
+    double best_volume = -1;
+    for (const EulerSet& set : all_euler_sets()) {
+      const double volume = std::abs(euler_angles(set, Q).volume);
+      if (volume > best_volume) {
+        best_volume = volume;
+        best = &set;
+      }
+    }
+    const auto& names = system.coordinates();
+    throw std::invalid_argument(
+        "body '" + body.name + "' " + state + " at the gimbal lock of its " +
+        body.chart->set.name() + " Euler angles (" + names[c[1]].name + " = " +
+        detail::to_short_text(angles[1]) + ", where only the sum or difference of " +
+        names[c[0]].name + " and " + names[c[2]].name +
+        " is defined and the mass matrix is singular): " + advice +
+        ", or describe its "
+        "rotation with {euler: " +
+        best->name() + ", ...}, regular there, or with {quaternion: [e0, e1, e2, e3]}");
+  }
+}
 
 SimulationOptions simulation_options(const SimulationSettings& settings) {
   SimulationOptions o;
@@ -316,7 +316,7 @@ SimulationStart initial_state(const System& system,
     start.qdot[I] =
         qdot_override[i] ? *qdot_override[i] : to_double(system.initial_rates[i], values);
   }
-  expect_no_gimbal_lock(system, start.q);
+  expect_no_gimbal_lock(system, start.q, "starts", "start it elsewhere");
   for (const InitialOmega& omega : system.initial_omegas) {
     for (const std::size_t j : omega.coordinates) {
       if (qdot_override[j]) {

@@ -22,6 +22,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "tape_execute.hpp"
 #include "unidyn/symbolic/horner_form.hpp"
 
 namespace unidyn {
@@ -36,91 +37,10 @@ constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 // Integer exponents up to this size become multiplications; larger ones use std::pow.
 constexpr long kMaxMultipliedPower = 64;
 
-// Execute one instruction on the registers r: the single definition of every operation, used
-// by evaluation and by compile-time constant folding alike. Operands are read before writing.
-inline void execute(const TapeInstruction& i, double* r) {
-  const double x = r[i.a];
-  switch (i.op) {
-    case TapeOp::add:
-      r[i.dst] = x + r[i.b];
-      break;
-    case TapeOp::sub:
-      r[i.dst] = x - r[i.b];
-      break;
-    case TapeOp::mul:
-      r[i.dst] = x * r[i.b];
-      break;
-    case TapeOp::div:
-      r[i.dst] = x / r[i.b];
-      break;
-    case TapeOp::neg:
-      r[i.dst] = -x;
-      break;
-    case TapeOp::recip:
-      r[i.dst] = 1.0 / x;
-      break;
-    case TapeOp::sqrt:
-      r[i.dst] = std::sqrt(x);
-      break;
-    case TapeOp::pow:
-      r[i.dst] = std::pow(x, r[i.b]);
-      break;
-    case TapeOp::sin:
-      r[i.dst] = std::sin(x);
-      break;
-    case TapeOp::cos:
-      r[i.dst] = std::cos(x);
-      break;
-    case TapeOp::sincos:
-      r[i.dst] = std::sin(x);
-      r[i.b] = std::cos(x);
-      break;
-    case TapeOp::tan:
-      r[i.dst] = std::tan(x);
-      break;
-    case TapeOp::asin:
-      r[i.dst] = std::asin(x);
-      break;
-    case TapeOp::acos:
-      r[i.dst] = std::acos(x);
-      break;
-    case TapeOp::atan:
-      r[i.dst] = std::atan(x);
-      break;
-    case TapeOp::atan2:
-      r[i.dst] = std::atan2(x, r[i.b]);
-      break;
-    case TapeOp::sinh:
-      r[i.dst] = std::sinh(x);
-      break;
-    case TapeOp::cosh:
-      r[i.dst] = std::cosh(x);
-      break;
-    case TapeOp::tanh:
-      r[i.dst] = std::tanh(x);
-      break;
-    case TapeOp::exp:
-      r[i.dst] = std::exp(x);
-      break;
-    case TapeOp::log:
-      r[i.dst] = std::log(x);
-      break;
-    case TapeOp::abs:
-      r[i.dst] = std::fabs(x);
-      break;
-    case TapeOp::sign:
-      r[i.dst] = x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0);
-      break;
-    case TapeOp::step:
-      r[i.dst] = x > 0.0 ? 1.0 : (x < 0.0 ? 0.0 : 0.5);
-      break;
-  }
-}
-
 // Value of a single-result operation on numbers (for constant folding).
 double fold(TapeOp op, double x, double y) {
   double r[3] = {x, y, 0.0};
-  execute(TapeInstruction{op, 2, 0, 1}, r);
+  detail::execute(TapeInstruction{op, 2, 0, 1}, r);
   return r[2];
 }
 
@@ -784,7 +704,7 @@ void Tape::evaluate(std::span<const double> inputs, std::span<double> outputs,
   // Load inputs and constants, run the program, gather the outputs.
   std::copy(inputs.begin(), inputs.end(), r);
   std::copy(constants_.begin(), constants_.end(), r + input_count());
-  for (const TapeInstruction& i : instructions_) execute(i, r);
+  for (const TapeInstruction& i : instructions_) detail::execute(i, r);
   for (std::size_t k = 0; k < outputs.size(); ++k) outputs[k] = r[output_registers_[k]];
 }
 

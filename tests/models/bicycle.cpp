@@ -2,7 +2,8 @@
 // Papadopoulos, Ruina & Schwab (2007), Proc. R. Soc. A 463: linearised about upright straight
 // running at speed v, the roll φ and steer δ obey
 //   M q̈ + v C1 q̇ + (g K0 + v² K2) q = 0,   q = (φ, δ),
-// with the matrices of their (A1)–(A4), given there to 14 digits. Here the full nonlinear model
+// with the matrices of their (A1)–(A4), given there to 14 digits (support/bicycle_benchmark.hpp).
+// Here the full nonlinear model
 // (eight coordinates, one holonomic and four rolling constraints) is linearised by central
 // differences of its accelerations, its other values completed from the constraints at each
 // perturbed state, and compared with those matrices, and with the speeds where the weave and the
@@ -10,31 +11,15 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
+#include "support/bicycle_benchmark.hpp"
 #include "support/model_run.hpp"
 #include "unidyn/kinematics/integrability.hpp"
 
 namespace unidyn {
 namespace {
 
-constexpr double g = 9.81, rR = 0.3;
-
-// (A1)–(A4) of Meijaard et al. (2007)
-const Eigen::Matrix2d M_benchmark{{80.81722, 2.31941332208709},
-                                  {2.31941332208709, 0.29784188199686}};
-const Eigen::Matrix2d C1_benchmark{{0, 33.86641391492494}, {-0.85035641456978, 1.68540397397560}};
-const Eigen::Matrix2d K0_benchmark{{-80.95, -2.59951685249872},
-                                   {-2.59951685249872, -0.80329488458618}};
-const Eigen::Matrix2d K2_benchmark{{0, 76.59734589573222}, {0, 2.65431523794604}};
-
-// The benchmark's state matrix of (φ, δ, φ̇, δ̇) at speed v.
-Eigen::Matrix4d benchmark_state_matrix(double v) {
-  const Eigen::Matrix2d Minv = M_benchmark.inverse();
-  Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
-  A.topRightCorner<2, 2>() = Eigen::Matrix2d::Identity();
-  A.bottomLeftCorner<2, 2>() = -Minv * (g * K0_benchmark + v * v * K2_benchmark);
-  A.bottomRightCorner<2, 2>() = -v * Minv * C1_benchmark;
-  return A;
-}
+using test::benchmark_state_matrix;
+constexpr double rR = test::kBenchmarkRearRadius;
 
 class Bicycle {
  public:
@@ -109,7 +94,7 @@ TEST(Bicycle, LinearisedEquationsAreTheBenchmarks) {
 // unstable at v_c = 6.02426201538837 m/s.
 TEST(Bicycle, SelfStableBetweenTheWeaveAndCapsizeSpeeds) {
   Bicycle bicycle;
-  constexpr double v_w = 4.29238253634111, v_c = 6.02426201538837;
+  constexpr double v_w = test::kWeaveSpeed, v_c = test::kCapsizeSpeed;
   EXPECT_NEAR(weave_and_capsize(bicycle.state_matrix(v_w)).first, 0.0, 1e-6);
   EXPECT_NEAR(weave_and_capsize(bicycle.state_matrix(v_c)).second, 0.0, 1e-6);
   const auto [weave, capsize] = weave_and_capsize(bicycle.state_matrix(5.0));

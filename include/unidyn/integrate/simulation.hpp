@@ -114,6 +114,13 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
 
 // Values of the parameters and the initial state of a model, with NAME=VALUE overrides applied to
 // parameters, coordinates (q) and rates (der(q)). Throws std::invalid_argument for an unknown name.
+// A body described by Euler angles must not be at their gimbal lock in q, where the angle rates of
+// a given ω do not exist and the mass matrix is singular: std::invalid_argument (bad input)
+// "body 'B' <state> at the gimbal lock of its ... Euler angles (...): <advice>, or describe its
+// rotation with" the Euler set most regular at that rotation, or with Euler parameters.
+void expect_no_gimbal_lock(const System& system, const Eigen::VectorXd& q, const std::string& state,
+                           const std::string& advice);
+
 SimulationStart initial_state(const System& system,
                               const std::vector<std::pair<std::string, double>>& overrides);
 

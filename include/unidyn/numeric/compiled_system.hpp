@@ -99,6 +99,11 @@ class CompiledSystem {
   // The constraint of each rough contact.
   const std::vector<std::size_t>& friction_constraints() const { return friction_constraint_; }
 
+  // The tapes of inputs [t, q, q̇, p] (tape_inputs): the dynamics → M (row by row), f, A (row by
+  // row), b; the constraints → A, e (A q̇ + e = 0), Ψ (position constraints; 0 for the others).
+  const Tape& dynamics() const { return dynamics_; }
+  const Tape& constraint_tape() const { return constraints_; }
+
   // The rough contacts' numbers at (t, q, q̇) into data.friction.
   void evaluate_friction(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                          std::span<const double> parameters, CompiledSystemData& data) const;

@@ -76,6 +76,7 @@ class TapeWorkspace {
  private:
   friend class Tape;
   std::vector<double> registers_;
+  std::vector<double> tangents_;  // forward-mode derivatives of the registers (evaluate_tangent)
 };
 
 class Tape {
@@ -111,6 +112,12 @@ class Tape {
                 TapeWorkspace& workspace) const;
   // Convenience form that allocates its result and a workspace.
   std::vector<double> evaluate(std::span<const double> inputs) const;
+  // The outputs and their derivatives along `direction` (forward mode, exact to round-off):
+  // d_outputs[k] = Σ_i ∂output_k/∂input_i · direction[i]. Where an operation has no derivative
+  // (|x| at 0, sign, step) it counts as 0; √x at 0 and log 0 give infinities, as they would.
+  void evaluate_tangent(std::span<const double> inputs, std::span<const double> direction,
+                        std::span<double> outputs, std::span<double> d_outputs,
+                        TapeWorkspace& workspace) const;
 
   // Human-readable program: inputs, constants, one instruction per line, outputs.
   std::string listing() const;

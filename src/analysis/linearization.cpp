@@ -1,0 +1,306 @@
+// Linearisation about an operating point in independent coordinates and speeds.
+#include "unidyn/analysis/linearization.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "unidyn/numeric/number_text.hpp"
+
+namespace unidyn {
+namespace {
+
+using Eigen::Index;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+// Entries below this fraction of the largest are round-off (for dependence and ignorability).
+constexpr double kNegligible = 1e-9;
+// A column is preferred as dependent only while it is this independent of the ones chosen.
+constexpr double kPreferredEnough = 1e-6;
+
+// The largest |entry| of x; 0 when it has none.
+template <class Derived>
+double largest(const Eigen::MatrixBase<Derived>& x) {
+  return x.size() == 0 ? 0.0 : x.cwiseAbs().maxCoeff();
+}
+
+// A tape's outputs at the point and their derivatives along its first `directions` inputs
+// (t, then the coordinates, then the rates): derivative.col(d) = ∂outputs/∂input_d.
+struct TapeDerivatives {
+  VectorXd value;
+  MatrixXd derivative;
+};
+
+TapeDerivatives derivatives(const Tape& tape, const std::vector<double>& inputs, Index directions) {
+  TapeDerivatives out{VectorXd(static_cast<Index>(tape.output_count())),
+                      MatrixXd(static_cast<Index>(tape.output_count()), directions)};
+  TapeWorkspace workspace(tape);
+  std::vector<double> seed(inputs.size(), 0.0), value(tape.output_count()),
+      tangent(tape.output_count());
+  for (Index d = 0; d < directions; ++d) {
+    seed[static_cast<std::size_t>(d)] = 1.0;
+    tape.evaluate_tangent(inputs, seed, value, tangent, workspace);
+    seed[static_cast<std::size_t>(d)] = 0.0;
+    out.derivative.col(d) = Eigen::Map<const VectorXd>(tangent.data(), out.value.size());
+  }
+  out.value = Eigen::Map<const VectorXd>(value.data(), out.value.size());
+  return out;
+}
+
+// A rows × cols matrix stored row by row in v from `offset`.
+MatrixXd row_major(const VectorXd& v, Index offset, Index rows, Index cols) {
+  MatrixXd out(rows, cols);
+  for (Index i = 0; i < rows; ++i) {
+    for (Index j = 0; j < cols; ++j) out(i, j) = v[offset + i * cols + j];
+  }
+  return out;
+}
+
+// J.rows() columns of J that are independent, chosen greedily: each time the column with the most
+// left after taking out the span of those chosen, from the preferred columns while one is
+// independent enough, else from all (ties to the first). Throws std::runtime_error when J's rows
+// are dependent.
+std::vector<Index> pivot_columns(const MatrixXd& J, const std::vector<bool>& preferred) {
+  const double scale = std::max(largest(J), 1e-300);
+  MatrixXd basis(J.rows(), 0);
+  std::vector<Index> chosen;
+  for (Index step = 0; step < J.rows(); ++step) {
+    Index best = -1;
+    double most = 0.0;
+    VectorXd best_rest;
+    for (const bool tier : {true, false}) {
+      for (Index c = 0; c < J.cols(); ++c) {
+        if (preferred[static_cast<std::size_t>(c)] != tier ||
+            std::find(chosen.begin(), chosen.end(), c) != chosen.end()) {
+          continue;
+        }
+        const VectorXd rest = J.col(c) - basis * (basis.transpose() * J.col(c));
+        if (rest.norm() > most) {
+          most = rest.norm();
+          best = c;
+          best_rest = rest;
+        }
+      }
+      if (tier && most > kPreferredEnough * scale) break;
+    }
+    if (best < 0 || most <= kNegligible * scale) {
+      throw std::runtime_error(
+          "the constraints are not independent at the operating point (a singular "
+          "configuration)");
+    }
+    chosen.push_back(best);
+    basis.conservativeResize(Eigen::NoChange, basis.cols() + 1);
+    basis.col(basis.cols() - 1) = best_rest / most;
+  }
+  return chosen;
+}
+
+// The indices 0..n−1 not in `dependent`, in order.
+std::vector<Index> complement(Index n, const std::vector<Index>& dependent) {
+  std::vector<Index> out;
+  for (Index i = 0; i < n; ++i) {
+    if (std::find(dependent.begin(), dependent.end(), i) == dependent.end()) out.push_back(i);
+  }
+  return out;
+}
+
+// The n × |independent| map from independent values to all: the independent ones themselves, the
+// dependent ones from J δ = 0 (J's dependent columns square).
+MatrixXd null_space_map(const MatrixXd& J, const std::vector<Index>& dependent,
+                        const std::vector<Index>& independent) {
+  const Index n = J.cols();
+  MatrixXd P = MatrixXd::Zero(n, static_cast<Index>(independent.size()));
+  for (std::size_t c = 0; c < independent.size(); ++c)
+    P(independent[c], static_cast<Index>(c)) = 1.0;
+  if (dependent.empty()) return P;
+  const Eigen::PartialPivLU<MatrixXd> Jd(J(Eigen::all, dependent));
+  const MatrixXd solved = Jd.solve(J(Eigen::all, independent));
+  P(dependent, Eigen::all) = -solved;
+  return P;
+}
+
+std::string rate_name(const std::string& coordinate) {
+  return "der(" + coordinate + ")";
+}
+
+}  // namespace
+
+Linearization linearize(const System& system, const CompiledSystem& compiled,
+                        const OperatingPoint& point) {
+  const auto n = static_cast<Index>(compiled.coordinate_count());
+  const auto m = static_cast<Index>(compiled.constraint_count());
+  std::vector<std::string> names;
+  for (const auto& q : system.coordinates()) names.push_back(q.name);
+
+  // 1. Values and derivatives along t, each coordinate and each rate.
+  std::vector<double> inputs{point.t};
+  inputs.insert(inputs.end(), point.q.begin(), point.q.end());
+  inputs.insert(inputs.end(), point.qdot.begin(), point.qdot.end());
+  inputs.insert(inputs.end(), point.parameters.begin(), point.parameters.end());
+  const Index directions = 1 + 2 * n;
+  const TapeDerivatives dynamics = derivatives(compiled.dynamics(), inputs, directions);
+  const TapeDerivatives constraints = derivatives(compiled.constraint_tape(), inputs, directions);
+  const MatrixXd M = row_major(dynamics.value, 0, n, n);
+  const MatrixXd A_all = row_major(dynamics.value, n * n + n, m, n);
+
+  // The constraints that hold, and the position constraints among them.
+  std::vector<Index> rows, position_rows;
+  for (Index k = 0; k < m; ++k) {
+    if (!point.active[static_cast<std::size_t>(k)]) continue;
+    rows.push_back(k);
+    if (compiled.is_position_constraint()[static_cast<std::size_t>(k)]) position_rows.push_back(k);
+  }
+  const MatrixXd A = A_all(rows, Eigen::all);
+
+  // Per direction d: ∂(M q̈ − f − Aᵀλ), ∂(A q̈ + b) over the rows that hold, ∂(A q̇ + e).
+  MatrixXd balance(n, directions), acceleration_rows(static_cast<Index>(rows.size()), directions),
+      velocity_rows(static_cast<Index>(rows.size()), directions);
+  for (Index d = 0; d < directions; ++d) {
+    const VectorXd& dd = dynamics.derivative.col(d);
+    const MatrixXd dM = row_major(dd, 0, n, n), dA = row_major(dd, n * n + n, m, n);
+    const VectorXd df = dd.segment(n * n, n), db = dd.segment(n * n + n + m * n, m);
+    balance.col(d) = dM * point.qddot - df - dA.transpose() * point.lambda;
+    acceleration_rows.col(d) = (dA * point.qddot + db)(rows);
+    const VectorXd& dc = constraints.derivative.col(d);
+    velocity_rows.col(d) = (row_major(dc, 0, m, n) * point.qdot + dc.segment(m * n, m))(rows);
+  }
+
+  // 3. δq̈ = D [δt; δq; δq̇] from the differentiated system [M −Aᵀ; A 0].
+  const Index r = static_cast<Index>(rows.size());
+  MatrixXd kkt = MatrixXd::Zero(n + r, n + r);
+  kkt.topLeftCorner(n, n) = M;
+  kkt.topRightCorner(n, r) = -A.transpose();
+  kkt.bottomLeftCorner(r, n) = A;
+  const Eigen::FullPivLU<MatrixXd> lu(kkt);
+  if (!lu.isInvertible()) {
+    throw std::runtime_error(
+        "the equations cannot be solved for the accelerations at the operating point (the mass "
+        "matrix and the constraints are singular there)");
+  }
+  MatrixXd right(n + r, directions);
+  right << balance, acceleration_rows;
+  const MatrixXd D = -lu.solve(right).topRows(n);
+  const MatrixXd D_q = D.middleCols(1, n), D_u = D.middleCols(1 + n, n);
+
+  // 2. The dependent coordinates (position rows) and rates (all rows), and the maps from the
+  // independent ones. Coordinates that appear nowhere (all derivatives along them 0) give their
+  // rates first as dependent ones.
+  std::vector<bool> no_preference(static_cast<std::size_t>(n), false),
+      appears_nowhere = no_preference;
+  for (Index j = 0; j < n; ++j) {
+    const double along = std::max(largest(dynamics.derivative.col(1 + j)),
+                                  largest(constraints.derivative.col(1 + j)));
+    appears_nowhere[static_cast<std::size_t>(j)] = along == 0.0;
+  }
+  const MatrixXd psi_q = A_all(position_rows, Eigen::all);
+  const std::vector<Index> dependent_q = pivot_columns(psi_q, no_preference);
+  const std::vector<Index> independent_q = complement(n, dependent_q);
+  const MatrixXd P_q = null_space_map(psi_q, dependent_q, independent_q);
+  const std::vector<Index> dependent_u = pivot_columns(A, appears_nowhere);
+  const std::vector<Index> independent_u = complement(n, dependent_u);
+  const MatrixXd P_u = null_space_map(A, dependent_u, independent_u);
+  MatrixXd R = MatrixXd::Zero(n, P_q.cols());
+  if (!dependent_u.empty()) {
+    const MatrixXd G = velocity_rows.middleCols(1, n);
+    R(dependent_u, Eigen::all) =
+        -Eigen::PartialPivLU<MatrixXd>(A(Eigen::all, dependent_u)).solve(G * P_q);
+  }
+
+  // 4. The state (ξ, η) and its matrix.
+  Linearization out;
+  out.coordinates = names;
+  const Index s1 = P_q.cols(), s2 = P_u.cols();
+  out.to_coordinates = MatrixXd::Zero(2 * n, s1 + s2);
+  out.to_coordinates.topLeftCorner(n, s1) = P_q;
+  out.to_coordinates.bottomLeftCorner(n, s1) = R;
+  out.to_coordinates.bottomRightCorner(n, s2) = P_u;
+  MatrixXd& F = out.full_A;
+  F.resize(s1 + s2, s1 + s2);
+  F.topLeftCorner(s1, s1) = R(independent_q, Eigen::all);
+  F.topRightCorner(s1, s2) = P_u(independent_q, Eigen::all);
+  F.bottomLeftCorner(s2, s1) = (D_q * P_q + D_u * R)(independent_u, Eigen::all);
+  F.bottomRightCorner(s2, s2) = (D_u * P_u)(independent_u, Eigen::all);
+
+  // 5. Ignorable coordinates: no other state's derivative depends on them.
+  const double scale = largest(F);
+  std::vector<bool> gone(static_cast<std::size_t>(s1 + s2), false);
+  for (bool dropped = true; dropped;) {
+    dropped = false;
+    for (Index k = 0; k < s1; ++k) {
+      if (gone[static_cast<std::size_t>(k)]) continue;
+      double most = 0.0;
+      for (Index i = 0; i < s1 + s2; ++i) {
+        if (i != k && !gone[static_cast<std::size_t>(i)]) most = std::max(most, std::abs(F(i, k)));
+      }
+      if (most > kNegligible * scale) continue;
+      gone[static_cast<std::size_t>(k)] = true;
+      out.dropped.push_back(k);
+      out.ignorable.push_back(
+          names[static_cast<std::size_t>(independent_q[static_cast<std::size_t>(k)])]);
+      dropped = true;
+    }
+  }
+  for (Index k = 0; k < s1 + s2; ++k) {
+    if (gone[static_cast<std::size_t>(k)]) continue;
+    out.kept.push_back(k);
+    const std::string& name =
+        names[static_cast<std::size_t>(k < s1 ? independent_q[static_cast<std::size_t>(k)]
+                                              : independent_u[static_cast<std::size_t>(k - s1)])];
+    out.state.push_back(k < s1 ? name : rate_name(name));
+  }
+  out.A = F(out.kept, out.kept);
+  for (const Index i : dependent_q)
+    out.dependent_coordinates.push_back(names[static_cast<std::size_t>(i)]);
+  for (const Index i : dependent_u)
+    out.dependent_rates.push_back(rate_name(names[static_cast<std::size_t>(i)]));
+  std::sort(out.dependent_coordinates.begin(), out.dependent_coordinates.end(),
+            [&](const std::string& a, const std::string& b) {
+              return *system.find_coordinate(a) < *system.find_coordinate(b);
+            });
+  std::sort(out.dependent_rates.begin(), out.dependent_rates.end(),
+            [&](const std::string& a, const std::string& b) {
+              return *system.find_coordinate(a.substr(4, a.size() - 5)) <
+                     *system.find_coordinate(b.substr(4, b.size() - 5));
+            });
+
+  // The point must stay where it is: kept coordinates at rest, independent rates steady, the
+  // equations the same at the next instant.
+  const double rate_tolerance = kNegligible * (1.0 + largest(point.qdot));
+  for (const Index k : out.kept) {
+    if (k >= s1) continue;
+    const Index i = independent_q[static_cast<std::size_t>(k)];
+    if (std::abs(point.qdot[i]) > rate_tolerance) {
+      const std::string& name = names[static_cast<std::size_t>(i)];
+      throw NotAnOperatingPoint(rate_name(name) + " = " + detail::to_short_text(point.qdot[i]) +
+                                " at the point, and the equations depend on " + name +
+                                " (it is not ignorable): not an equilibrium or a steady motion; "
+                                "give " +
+                                rate_name(name) + "=0 with --at");
+    }
+  }
+  const double force_scale =
+      (largest(dynamics.value.segment(n * n, n)) + largest(A_all.transpose() * point.lambda)) /
+      std::max(largest(M.diagonal()), 1e-300);
+  const double acceleration_tolerance = 1e-8 * (1.0 + force_scale);
+  for (const Index i : independent_u) {
+    const std::string& name = names[static_cast<std::size_t>(i)];
+    if (std::abs(point.qddot[i]) > acceleration_tolerance) {
+      throw NotAnOperatingPoint("the acceleration of " + name + " is " +
+                                detail::to_short_text(point.qddot[i]) +
+                                " at the point: the forces do not balance there, so it is not an "
+                                "equilibrium or a steady motion");
+    }
+    if (std::abs(D(i, 0)) > acceleration_tolerance) {
+      throw NotAnOperatingPoint("the equations change with t at the point (the acceleration of " +
+                                name + " does): it is not an equilibrium or a steady motion");
+    }
+  }
+
+  // Without constraints, the second-order form too.
+  if (m == 0) {
+    out.second_order = SecondOrderForm{M, balance.middleCols(1 + n, n), balance.middleCols(1, n)};
+  }
+  return out;
+}
+
+}  // namespace unidyn

@@ -1,0 +1,128 @@
+// The operating point: the values given, the rest completed from the constraints, q̈ and λ solved.
+#include "unidyn/analysis/operating_point.hpp"
+
+#include <set>
+#include <stdexcept>
+
+#include "unidyn/integrate/initial_state.hpp"
+#include "unidyn/integrate/simulation.hpp"
+#include "unidyn/model/scope.hpp"
+#include "unidyn/symbolic/printing.hpp"
+#include "unidyn/symbolic/real_value.hpp"
+
+namespace unidyn {
+namespace {
+
+// The coordinate a name gives a value or a rate of, and whether it is the rate.
+std::optional<std::pair<std::size_t, bool>> named_value(const System& system,
+                                                        const std::string& name) {
+  if (const auto q = system.find_coordinate(name)) return std::pair{*q, false};
+  if (name.starts_with("der(") && name.ends_with(")")) {
+    if (const auto q = system.find_coordinate(name.substr(4, name.size() - 5))) {
+      return std::pair{*q, true};
+    }
+  }
+  return std::nullopt;
+}
+
+// A unilateral constraint is apart where Ψ exceeds round-off of the coordinates' size.
+bool apart(double psi, const Eigen::VectorXd& q) {
+  return psi > kInitialStateTolerance * (1.0 + q.cwiseAbs().maxCoeff());
+}
+
+}  // namespace
+
+std::vector<GivenValue> parse_given_values(const System& system,
+                                           const std::vector<std::string>& texts) {
+  std::vector<GivenValue> given;
+  std::set<std::string> names;
+  const SystemScope scope(system);
+  for (const std::string& text : texts) {
+    const std::size_t eq = text.find('=');
+    const std::string name = text.substr(0, eq);
+    if (eq == std::string::npos || !named_value(system, name)) {
+      throw std::invalid_argument("--at " + text +
+                                  ": expected NAME=VALUE, NAME a coordinate or der(coordinate)");
+    }
+    if (!names.insert(name).second) throw std::invalid_argument("--at gives " + name + " twice");
+    Expr value;
+    try {
+      value = parse_scalar(std::string_view(text).substr(eq + 1), scope, {});
+    } catch (const ModelError& e) {
+      throw std::invalid_argument("--at " + text + ": " + e.what());
+    }
+    // a number, or an expression in the parameters alone
+    for (const auto& q : system.coordinates()) {
+      if (value.has(q.value) || value.has(q.rate) || value.has(q.acceleration)) {
+        throw std::invalid_argument("--at " + text +
+                                    ": the value must be a number or an expression in the "
+                                    "parameters, not in coordinates or rates");
+      }
+    }
+    if (value.has(system.time())) {
+      throw std::invalid_argument("--at " + text + ": the value must not depend on t");
+    }
+    given.push_back({name, value});
+  }
+  return given;
+}
+
+OperatingPoint operating_point(const System& system, const CompiledSystem& compiled,
+                               const std::vector<GivenValue>& given,
+                               const std::vector<double>& parameters) {
+  const std::size_t n = system.coordinates().size(), m = system.constraints.size();
+  for (const Constraint& c : system.constraints) {
+    if (c.friction) {
+      throw std::invalid_argument("constraint '" + c.name +
+                                  "' has friction: a rough contact's stick and slip are not "
+                                  "smooth, and its motion is not linearised here");
+    }
+  }
+  // The values given, at the parameters' values.
+  GiNaC::exmap values;
+  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
+    values[system.parameters[k].symbol] = parameters[k];
+  }
+  SimulationStart start;
+  start.parameters = parameters;
+  start.q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
+  start.qdot = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
+  start.q_given.assign(n, false);
+  start.qdot_given.assign(n, false);
+  for (const GivenValue& g : given) {
+    const auto [i, rate] = *named_value(system, g.name);
+    const std::optional<double> v = real_value(g.value, values);
+    if (!v) {
+      throw std::invalid_argument("--at " + g.name + "=" + to_text(g.value) +
+                                  ": not a real number at the parameters' values");
+    }
+    (rate ? start.qdot : start.q)[static_cast<Eigen::Index>(i)] = *v;
+    (rate ? start.qdot_given : start.q_given)[i] = true;
+  }
+  // The rest from the constraints; then no Euler angles at gimbal lock.
+  OperatingPoint point;
+  point.computed = complete_initial_state(system, compiled, start);
+  expect_no_gimbal_lock(system, start.q, "is",
+                        "linearise about another rotation of it (another value of the angles)");
+  point.t = start.t0;
+  point.parameters = std::move(start.parameters);
+  point.q = std::move(start.q);
+  point.qdot = std::move(start.qdot);
+  point.q_given = std::move(start.q_given);
+  point.qdot_given = std::move(start.qdot_given);
+  // Unilateral constraints apart there exert nothing; the others hold.
+  CompiledSystemData data = compiled.make_data();
+  compiled.constraints(point.t, point.q, point.qdot, point.parameters, data);
+  point.active.assign(m, true);
+  for (std::size_t k = 0; k < m; ++k) {
+    if (system.constraints[k].unilateral &&
+        apart(data.constraint_position[static_cast<Eigen::Index>(k)], point.q)) {
+      point.active[k] = false;
+    }
+  }
+  data.active = point.active;
+  compiled.solve(point.t, point.q, point.qdot, point.parameters, point.qddot, point.lambda, data);
+  return point;
+}
+
+}  // namespace unidyn
