@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
+#include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/numeric/number_text.hpp"
 
 namespace unidyn {
@@ -123,14 +125,24 @@ std::string rate_name(const std::string& coordinate) {
   return "der(" + coordinate + ")";
 }
 
-}  // namespace
+// The choice of dependent coordinates and rates, and the independent ones, in order.
+struct Choice {
+  std::vector<Index> dependent_q, independent_q, dependent_u, independent_u;
+};
 
-Linearization linearize(const System& system, const CompiledSystem& compiled,
-                        const OperatingPoint& point) {
+// The reduced system at a state: ẋ = F x for x = (ξ, η), with the maps P_q, P_u, R and δq̈ = D
+// [δt; δq; δq̇]. The dependent coordinates and rates are chosen here unless `given` says them.
+struct ReducedSystem {
+  Choice choice;
+  MatrixXd F, P_q, P_u, R, D, M, A_all, balance;
+  VectorXd f;
+};
+
+ReducedSystem reduced_system(const CompiledSystem& compiled, const OperatingPoint& point,
+                             const Choice* given) {
   const auto n = static_cast<Index>(compiled.coordinate_count());
   const auto m = static_cast<Index>(compiled.constraint_count());
-  std::vector<std::string> names;
-  for (const auto& q : system.coordinates()) names.push_back(q.name);
+  ReducedSystem out;
 
   // 1. Values and derivatives along t, each coordinate and each rate.
   std::vector<double> inputs{point.t};
@@ -140,9 +152,11 @@ Linearization linearize(const System& system, const CompiledSystem& compiled,
   const Index directions = 1 + 2 * n;
   const TapeDerivatives dynamics = derivatives(compiled.dynamics(), inputs, directions);
   const TapeDerivatives constraints = derivatives(compiled.constraint_tape(), inputs, directions);
-  const MatrixXd M = row_major(dynamics.value, 0, n, n);
-  const MatrixXd A_all = row_major(dynamics.value, n * n + n, m, n);
-
+  out.M = row_major(dynamics.value, 0, n, n);
+  out.f = dynamics.value.segment(n * n, n);
+  out.A_all = row_major(dynamics.value, n * n + n, m, n);
+  const MatrixXd& M = out.M;
+  const MatrixXd& A_all = out.A_all;
   // The constraints that hold, and the position constraints among them.
   std::vector<Index> rows, position_rows;
   for (Index k = 0; k < m; ++k) {
@@ -153,7 +167,9 @@ Linearization linearize(const System& system, const CompiledSystem& compiled,
   const MatrixXd A = A_all(rows, Eigen::all);
 
   // Per direction d: ∂(M q̈ − f − Aᵀλ), ∂(A q̈ + b) over the rows that hold, ∂(A q̇ + e).
-  MatrixXd balance(n, directions), acceleration_rows(static_cast<Index>(rows.size()), directions),
+  MatrixXd& balance = out.balance;
+  balance.resize(n, directions);
+  MatrixXd acceleration_rows(static_cast<Index>(rows.size()), directions),
       velocity_rows(static_cast<Index>(rows.size()), directions);
   for (Index d = 0; d < directions; ++d) {
     const VectorXd& dd = dynamics.derivative.col(d);
@@ -179,7 +195,8 @@ Linearization linearize(const System& system, const CompiledSystem& compiled,
   }
   MatrixXd right(n + r, directions);
   right << balance, acceleration_rows;
-  const MatrixXd D = -lu.solve(right).topRows(n);
+  out.D = -lu.solve(right).topRows(n);
+  const MatrixXd& D = out.D;
   const MatrixXd D_q = D.middleCols(1, n), D_u = D.middleCols(1 + n, n);
 
   // 2. The dependent coordinates (position rows) and rates (all rows), and the maps from the
@@ -193,18 +210,84 @@ Linearization linearize(const System& system, const CompiledSystem& compiled,
     appears_nowhere[static_cast<std::size_t>(j)] = along == 0.0;
   }
   const MatrixXd psi_q = A_all(position_rows, Eigen::all);
-  const std::vector<Index> dependent_q = pivot_columns(psi_q, no_preference);
-  const std::vector<Index> independent_q = complement(n, dependent_q);
-  const MatrixXd P_q = null_space_map(psi_q, dependent_q, independent_q);
-  const std::vector<Index> dependent_u = pivot_columns(A, appears_nowhere);
-  const std::vector<Index> independent_u = complement(n, dependent_u);
-  const MatrixXd P_u = null_space_map(A, dependent_u, independent_u);
-  MatrixXd R = MatrixXd::Zero(n, P_q.cols());
+  if (given) {
+    out.choice = *given;
+  } else {
+    out.choice.dependent_q = pivot_columns(psi_q, no_preference);
+    out.choice.independent_q = complement(n, out.choice.dependent_q);
+    out.choice.dependent_u = pivot_columns(A, appears_nowhere);
+    out.choice.independent_u = complement(n, out.choice.dependent_u);
+  }
+  const auto& [dependent_q, independent_q, dependent_u, independent_u] = out.choice;
+  out.P_q = null_space_map(psi_q, dependent_q, independent_q);
+  out.P_u = null_space_map(A, dependent_u, independent_u);
+  const MatrixXd &P_q = out.P_q, &P_u = out.P_u;
+  out.R = MatrixXd::Zero(n, P_q.cols());
+  MatrixXd& R = out.R;
   if (!dependent_u.empty()) {
     const MatrixXd G = velocity_rows.middleCols(1, n);
     R(dependent_u, Eigen::all) =
         -Eigen::PartialPivLU<MatrixXd>(A(Eigen::all, dependent_u)).solve(G * P_q);
   }
+
+  // 4. ẋ = F x: ξ̇ the independent coordinates' rows of δq̇, η̇ the independent rates' of δq̈.
+  const Index s1 = P_q.cols(), s2 = P_u.cols();
+  MatrixXd& F = out.F;
+  F.resize(s1 + s2, s1 + s2);
+  F.topLeftCorner(s1, s1) = R(independent_q, Eigen::all);
+  F.topRightCorner(s1, s2) = P_u(independent_q, Eigen::all);
+  F.bottomLeftCorner(s2, s1) = (D_q * P_q + D_u * R)(independent_u, Eigen::all);
+  F.bottomRightCorner(s2, s2) = (D_u * P_u)(independent_u, Eigen::all);
+  return out;
+}
+
+// A state near the point, on the constraints: the independent coordinates and rates moved by small
+// amounts of their own, the dependent ones completed (integrate/initial_state.hpp), q̈ and λ solved.
+// Nothing when the constraints or the equations cannot be satisfied there.
+std::optional<OperatingPoint> nearby_state(const System& system, const CompiledSystem& compiled,
+                                           const OperatingPoint& point, const ReducedSystem& at) {
+  const Index s1 = at.P_q.cols(), s2 = at.P_u.cols();
+  VectorXd xi(s1), eta(s2);
+  // distinct, not small: an influence of order ε² shows above round-off
+  for (Index k = 0; k < s1; ++k) xi[k] = 1e-3 * (1.0 + 0.37 * static_cast<double>(k));
+  for (Index k = 0; k < s2; ++k) eta[k] = 1e-3 * (1.0 + 0.29 * static_cast<double>(k));
+  const double rate_scale = 1.0 + largest(point.qdot);
+  SimulationStart start;
+  start.t0 = point.t;
+  start.parameters = point.parameters;
+  start.q = point.q + at.P_q * xi;
+  start.qdot = point.qdot + rate_scale * (at.P_u * eta) + at.R * xi;
+  const auto n = static_cast<std::size_t>(point.q.size());
+  start.q_given.assign(n, false);
+  start.qdot_given.assign(n, false);
+  for (const Index i : at.choice.independent_q) start.q_given[static_cast<std::size_t>(i)] = true;
+  for (const Index i : at.choice.independent_u)
+    start.qdot_given[static_cast<std::size_t>(i)] = true;
+  try {
+    complete_initial_state(system, compiled, start);
+    OperatingPoint near = point;
+    near.q = start.q;
+    near.qdot = start.qdot;
+    CompiledSystemData data = compiled.make_data();
+    data.active = point.active;
+    compiled.solve(near.t, near.q, near.qdot, near.parameters, near.qddot, near.lambda, data);
+    return near;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+Linearization linearize(const System& system, const CompiledSystem& compiled,
+                        const OperatingPoint& point) {
+  const auto n = static_cast<Index>(compiled.coordinate_count());
+  const auto m = static_cast<Index>(compiled.constraint_count());
+  std::vector<std::string> names;
+  for (const auto& q : system.coordinates()) names.push_back(q.name);
+  const ReducedSystem at = reduced_system(compiled, point, nullptr);
+  const auto& [dependent_q, independent_q, dependent_u, independent_u] = at.choice;
+  const MatrixXd &P_q = at.P_q, &P_u = at.P_u, &R = at.R, &D = at.D, &M = at.M, &A_all = at.A_all;
 
   // 4. The state (ξ, η) and its matrix.
   Linearization out;
@@ -214,25 +297,27 @@ Linearization linearize(const System& system, const CompiledSystem& compiled,
   out.to_coordinates.topLeftCorner(n, s1) = P_q;
   out.to_coordinates.bottomLeftCorner(n, s1) = R;
   out.to_coordinates.bottomRightCorner(n, s2) = P_u;
-  MatrixXd& F = out.full_A;
-  F.resize(s1 + s2, s1 + s2);
-  F.topLeftCorner(s1, s1) = R(independent_q, Eigen::all);
-  F.topRightCorner(s1, s2) = P_u(independent_q, Eigen::all);
-  F.bottomLeftCorner(s2, s1) = (D_q * P_q + D_u * R)(independent_u, Eigen::all);
-  F.bottomRightCorner(s2, s2) = (D_u * P_u)(independent_u, Eigen::all);
+  out.full_A = at.F;
+  const MatrixXd& F = out.full_A;
 
-  // 5. Ignorable coordinates: no other state's derivative depends on them.
-  const double scale = largest(F);
+  // 5. Ignorable coordinates: no other state's derivative depends on them, here or at a state
+  // nearby (where an influence that vanishes only at the point, as at a bifurcation, shows). With
+  // no state nearby, none is dropped.
+  const std::optional<OperatingPoint> near = nearby_state(system, compiled, point, at);
+  const MatrixXd F_near = near ? reduced_system(compiled, *near, &at.choice).F : F;
+  const double scale = largest(F), scale_near = largest(F_near);
   std::vector<bool> gone(static_cast<std::size_t>(s1 + s2), false);
   for (bool dropped = true; dropped;) {
     dropped = false;
     for (Index k = 0; k < s1; ++k) {
       if (gone[static_cast<std::size_t>(k)]) continue;
-      double most = 0.0;
+      double most = 0.0, most_near = 0.0;
       for (Index i = 0; i < s1 + s2; ++i) {
-        if (i != k && !gone[static_cast<std::size_t>(i)]) most = std::max(most, std::abs(F(i, k)));
+        if (i == k || gone[static_cast<std::size_t>(i)]) continue;
+        most = std::max(most, std::abs(F(i, k)));
+        most_near = std::max(most_near, std::abs(F_near(i, k)));
       }
-      if (most > kNegligible * scale) continue;
+      if (!near || most > kNegligible * scale || most_near > kNegligible * scale_near) continue;
       gone[static_cast<std::size_t>(k)] = true;
       out.dropped.push_back(k);
       out.ignorable.push_back(
@@ -278,9 +363,8 @@ Linearization linearize(const System& system, const CompiledSystem& compiled,
                                 rate_name(name) + "=0 with --at");
     }
   }
-  const double force_scale =
-      (largest(dynamics.value.segment(n * n, n)) + largest(A_all.transpose() * point.lambda)) /
-      std::max(largest(M.diagonal()), 1e-300);
+  const double force_scale = (largest(at.f) + largest(A_all.transpose() * point.lambda)) /
+                             std::max(largest(M.diagonal()), 1e-300);
   const double acceleration_tolerance = 1e-8 * (1.0 + force_scale);
   for (const Index i : independent_u) {
     const std::string& name = names[static_cast<std::size_t>(i)];
@@ -298,7 +382,8 @@ Linearization linearize(const System& system, const CompiledSystem& compiled,
 
   // Without constraints, the second-order form too.
   if (m == 0) {
-    out.second_order = SecondOrderForm{M, balance.middleCols(1 + n, n), balance.middleCols(1, n)};
+    out.second_order =
+        SecondOrderForm{M, at.balance.middleCols(1 + n, n), at.balance.middleCols(1, n)};
   }
   return out;
 }

@@ -18,14 +18,15 @@ using Eigen::VectorXcd;
 using complex = std::complex<double>;
 
 // Eigenvalues this close (relative to the largest) are one; those this close to the imaginary
-// axis are on it. Wider than round-off: a Jordan block of size 2 splits by about √ε.
-constexpr double kClose = 1e-7;
+// axis are on it. Wider than round-off: a Jordan block of size 2 splits by the square root of the
+// error in A (1e-12 of it splits it by 1e-6).
+constexpr double kClose = 1e-6;
 
 // v carried to every coordinate: the dropped (ignorable) states from δẋ_k = F_k · w, last dropped
 // first, then δq = to_coordinates · w; scaled so that its largest entry is 1. A mode that moves
 // no coordinate (λ = 0 along a rate) is given by its rates instead.
 std::vector<complex> mode_shape(const Linearization& L, const VectorXcd& v, complex lambda,
-                                double tolerance) {
+                                double tolerance, bool& of_rates) {
   const Index full = L.full_A.rows();
   VectorXcd w = VectorXcd::Zero(full);
   for (std::size_t i = 0; i < L.kept.size(); ++i) w[L.kept[i]] = v[static_cast<Index>(i)];
@@ -41,7 +42,8 @@ std::vector<complex> mode_shape(const Linearization& L, const VectorXcd& v, comp
   const Index n = static_cast<Index>(L.coordinates.size());
   const VectorXcd all = L.to_coordinates.cast<complex>() * w;
   VectorXcd shape = all.head(n);
-  if (shape.cwiseAbs().maxCoeff() <= tolerance * all.cwiseAbs().maxCoeff()) shape = all.tail(n);
+  of_rates = shape.cwiseAbs().maxCoeff() <= tolerance * all.cwiseAbs().maxCoeff();
+  if (of_rates) shape = all.tail(n);
   Index largest = 0;
   shape.cwiseAbs().maxCoeff(&largest);
   if (std::abs(shape[largest]) > 0.0) shape /= shape[largest];
@@ -58,6 +60,7 @@ bool semisimple(const MatrixXd& A, complex mu, Index k, double scale) {
 
 std::string eigenvalue_text(complex lambda) {
   if (lambda.imag() == 0.0) return detail::to_short_text(lambda.real());
+  if (lambda.real() == 0.0) return "±" + detail::to_short_text(std::abs(lambda.imag())) + "i";
   return detail::to_short_text(lambda.real()) + (lambda.imag() < 0 ? " - " : " + ") +
          detail::to_short_text(std::abs(lambda.imag())) + "i";
 }
@@ -95,6 +98,7 @@ ModeAnalysis analyse_modes(const Linearization& L) {
   const MatrixXcd vectors = solver.eigenvectors();
   const double largest = lambda.cwiseAbs().maxCoeff();
   const double tolerance = kClose * std::max(largest, 1.0);
+  out.tolerance = tolerance;
 
   // The modes: real eigenvalues, then one of each complex pair, each by Re λ from the largest.
   std::vector<Index> order;
@@ -104,8 +108,10 @@ ModeAnalysis analyse_modes(const Linearization& L) {
   const auto is_real = [&](Index k) { return std::abs(lambda[k].imag()) <= tolerance; };
   std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) {
     if (is_real(a) != is_real(b)) return is_real(a);
-    if (lambda[a].real() != lambda[b].real()) return lambda[a].real() > lambda[b].real();
-    return lambda[a].imag() > lambda[b].imag();
+    if (std::abs(lambda[a].real() - lambda[b].real()) > tolerance) {
+      return lambda[a].real() > lambda[b].real();
+    }
+    return lambda[a].imag() < lambda[b].imag();  // equal decay: the slower oscillation first
   });
   for (const Index k : order) {
     Mode mode;
@@ -115,7 +121,7 @@ ModeAnalysis analyse_modes(const Linearization& L) {
     mode.damping_ratio = mode.natural_frequency > 0.0
                              ? -mode.eigenvalue.real() / mode.natural_frequency
                              : std::numeric_limits<double>::quiet_NaN();
-    mode.shape = mode_shape(L, vectors.col(k), lambda[k], tolerance);
+    mode.shape = mode_shape(L, vectors.col(k), lambda[k], tolerance, mode.of_rates);
     out.modes.push_back(std::move(mode));
   }
 

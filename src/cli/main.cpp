@@ -9,6 +9,7 @@
 #include <exception>
 #include <iostream>
 
+#include "analysis_commands.hpp"
 #include "fixed_layout.hpp"
 #include "model_commands.hpp"
 #include "rotation_command.hpp"
@@ -35,6 +36,8 @@ int main(int argc, char** argv) {
   unidyn::cli::add_rotation_command(app, rotation);
   unidyn::cli::ModelCommands models;
   unidyn::cli::add_model_commands(app, models);
+  unidyn::cli::AnalysisCommands analysis;
+  unidyn::cli::add_analysis_commands(app, analysis);
 
   try {
     app.parse(argc, argv);
@@ -57,7 +60,9 @@ int main(int argc, char** argv) {
 
   try {
     int status = rotation.rotation->parsed() ? unidyn::cli::run_rotation_command(rotation)
-                                             : unidyn::cli::run_model_commands(models);
+                 : analysis.linearize->parsed() || analysis.modes->parsed()
+                     ? unidyn::cli::run_analysis_commands(analysis)
+                     : unidyn::cli::run_model_commands(models);
     if (status < 0) status = 2;
     // what could not be written to standard output (a full disk, /dev/full) is a failure
     if (std::fflush(stdout) != 0 || std::ferror(stdout)) {

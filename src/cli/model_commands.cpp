@@ -1,6 +1,8 @@
 // The model pipeline commands.
 #include "model_commands.hpp"
 
+#include "command_model.hpp"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -35,98 +37,8 @@
 #include "unidyn/symbolic/printable_text.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
-#ifndef UNIDYN_MODELS_DIR
-#define UNIDYN_MODELS_DIR "models"
-#endif
-
 namespace unidyn::cli {
 namespace {
-
-namespace fs = std::filesystem;
-
-// The bundled models: $UNIDYN_MODELS or the source tree's models/.
-fs::path models_directory() {
-  if (const char* env = std::getenv("UNIDYN_MODELS")) return env;
-  return UNIDYN_MODELS_DIR;
-}
-
-std::vector<fs::path> bundled_models() {
-  std::vector<fs::path> found;
-  std::error_code error;
-  for (fs::recursive_directory_iterator it(models_directory(), error), end; !error && it != end;
-       it.increment(error)) {
-    if (it->path().extension() == ".yaml") found.push_back(it->path());
-  }
-  std::sort(found.begin(), found.end());
-  return found;
-}
-
-// The edit distance between two names (insertions, deletions, substitutions).
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
-// A model argument: a file, or the name of a bundled model; neither is bad input, with the
-// bundled model of the nearest name when there is one close enough.
-std::string resolve_model(const std::string& argument) {
-  if (fs::exists(argument)) return argument;
-  std::string nearest;
-  std::size_t best = argument.size() / 3 + 2;
-  for (const auto& path : bundled_models()) {
-    if (path.stem() == argument) return path.string();
-    if (const std::size_t d = edit_distance(argument, path.stem().string()); d < best) {
-      best = d;
-      nearest = path.stem().string();
-    }
-  }
-  // a path (with a slash or an extension) that does not exist: load_model says it cannot open it
-  if (argument.find('/') != std::string::npos || fs::path(argument).has_extension()) {
-    return argument;
-  }
-  throw std::invalid_argument("'" + argument + "' is neither a model file nor a bundled model" +
-                              (nearest.empty() ? "" : "; did you mean '" + nearest + "'?") +
-                              " (`unidyn models` lists them)");
-}
-
-std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::string>& sets) {
-  std::vector<std::pair<std::string, double>> overrides;
-  for (const auto& s : sets) {
-    const std::size_t eq = s.find('=');
-    double value = 0;
-    const char* begin = s.data() + (eq == std::string::npos ? 0 : eq + 1);
-    const auto [ptr, ec] = std::from_chars(begin, s.data() + s.size(), value);
-    if (eq == std::string::npos || ec != std::errc() || ptr != s.data() + s.size() ||
-        !std::isfinite(value)) {
-      throw std::invalid_argument("--set " + s + ": expected NAME=NUMBER (a finite number)");
-    }
-    overrides.emplace_back(s.substr(0, eq), value);
-  }
-  return overrides;
-}
-
-// The model named on the command line, read once, and the text it was read from.
-struct CommandModel {
-  System system;
-  std::string text;
-  std::string path;
-};
-CommandModel read_command_model(const ModelCommands& c) {
-  const std::string path = resolve_model(c.model);
-  std::string text = read_model_text(path);
-  System system = parse_model(text, path);
-  return {std::move(system), std::move(text), path};
-}
 
 // With --reduced, the model's approach-II form (the notes on what was eliminated go to standard
 // error).
@@ -652,7 +564,7 @@ int run_model_commands(const ModelCommands& c) {
   if (c.models->parsed()) return run_models(c);
   if (!c.derive->parsed() && !c.simulate->parsed() && !c.check->parsed()) return -1;
   if (c.timings) start_phase_timings();
-  const CommandModel model = read_command_model(c);
+  const CommandModel model = read_command_model(c.model);
   end_phase("read model");
   // the timings on standard error however the command ends
   struct Report {

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "unidyn/io/equation_report.hpp"
+#include "unidyn/io/json_text.hpp"
 #include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/real_value.hpp"
@@ -11,24 +12,9 @@
 namespace unidyn {
 namespace {
 
-// A JSON string literal (names and expressions are printable text: model_checks refuses others).
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
 // A simplified expression in SymPy's notation, as a JSON string.
 std::string expression(const Expr& e) {
   return quoted(canonical_sympy(simplify(e)));
-}
-
-// A number as JSON: the shortest text that reads back as the same double; null when it has none.
-std::string number(const std::optional<double>& x) {
-  return x ? fmt::format("{}", *x) : std::string("null");
 }
 
 }  // namespace
@@ -52,13 +38,14 @@ void write_lagrange_json(std::ostream& out, const System& system, const Equation
     out << (i ? ",\n    " : "\n    ") << "{\"name\": " << quoted(q[i].name)
         << ", \"rate\": " << quoted(sympy_name(q[i].name + "'"))
         << ", \"acceleration\": " << quoted(sympy_name(q[i].name + "''"))
-        << ", \"initial\": " << number(real_value(system.initial_values[i], values))
-        << ", \"initial_rate\": " << number(real_value(system.initial_rates[i], values)) << "}";
+        << ", \"initial\": " << json_number(real_value(system.initial_values[i], values))
+        << ", \"initial_rate\": " << json_number(real_value(system.initial_rates[i], values))
+        << "}";
   }
   out << "\n  ],\n  \"parameters\": [";
   for (std::size_t k = 0; k < system.parameters.size(); ++k) {
     out << (k ? ", " : "") << "{\"name\": " << quoted(system.parameters[k].name)
-        << ", \"value\": " << number(system.parameters[k].value) << "}";
+        << ", \"value\": " << json_number(system.parameters[k].value) << "}";
   }
   out << "],\n  \"kinetic_energy\": " << expression(eq.kinetic_energy);
   out << ",\n  \"potential_energy\": " << expression(eq.potential_energy);

@@ -6,7 +6,9 @@
 // carried to every coordinate, the ignorable ones included (their motion δq̇ = a·v integrated:
 // δq = a·v/λ), scaled so that its largest coordinate is 1.
 //
-// The verdict, with a tolerance of 1e-9 of the largest |λ| (at least 1e-9):
+// The verdict, with a tolerance of 1e-6 of the largest |λ| (at least 1e-6) for "on the imaginary
+// axis" and "the same eigenvalue" (coarser than round-off: an eigenvalue of multiplicity 2 without
+// two eigenvectors splits by the square root of the perturbation):
 //   - unstable: an eigenvalue with Re λ > 0 (they are listed);
 //   - asymptotically stable: every Re λ < 0;
 //   - linearly stable: every Re λ ≤ 0, those on the imaginary axis semisimple (as many independent
@@ -29,18 +31,22 @@ struct Mode {
   double natural_frequency = 0.0;  // |λ|, rad/s
   double damped_frequency = 0.0;   // |Im λ|, rad/s
   double damping_ratio = 0.0;      // −Re λ / |λ| (NaN for λ = 0)
-  // δq of each coordinate (Linearization::coordinates), the largest of modulus 1.
+  // δq of each coordinate (Linearization::coordinates), the largest of modulus 1; of a mode that
+  // moves no coordinate (λ = 0 along a rate), δq̇ instead, and `of_rates`.
   std::vector<std::complex<double>> shape;
+  bool of_rates = false;
 };
 
 enum class Stability { asymptotically_stable, linearly_stable, unstable, inconclusive };
 
 struct ModeAnalysis {
   // One per eigenvalue: real ones, then one of each complex pair (Im λ > 0), each group by Re λ
-  // from the largest down.
+  // from the largest down (equal ones, within the tolerance, by Im λ from the smallest).
   std::vector<Mode> modes;
   Stability verdict = Stability::inconclusive;
   std::string reason;
+  // Below this |Re λ| an eigenvalue counts as on the imaginary axis.
+  double tolerance = 0.0;
 };
 
 ModeAnalysis analyse_modes(const Linearization& linearization);

@@ -1,0 +1,105 @@
+// Eigenvalues along a parameter, and where stability changes.
+#include "unidyn/analysis/parameter_sweep.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "unidyn/integrate/simulation.hpp"
+
+namespace unidyn {
+namespace {
+
+// Singular values of A this small (relative to the largest) are zero: as many of the eigenvalues
+// nearest 0 are the neighbouring steady motions', 0 at every value, and not counted in the growth.
+// Counted at the values of the sweep, not between them: near a boundary where an eigenvalue
+// passes through 0 (the bicycle's capsize speed) it would be counted too, and the boundary moved.
+constexpr double kZero = 1e-12;
+
+// The eigenvalues at one value of the parameter, or why there are none; the growth leaving out
+// `zeros` eigenvalues nearest 0, or as many as A's zero singular values when not given.
+SweepPoint point_at(const System& system, const CompiledSystem& compiled,
+                    const std::vector<GivenValue>& given,
+                    std::vector<std::pair<std::string, double>> parameters, const std::string& name,
+                    double value, std::optional<std::size_t> given_zeros = std::nullopt) {
+  SweepPoint out;
+  out.value = value;
+  std::size_t zeros = given_zeros.value_or(0);
+  parameters.emplace_back(name, value);
+  try {
+    const OperatingPoint point =
+        operating_point(system, compiled, given, initial_state(system, parameters).parameters);
+    const Linearization L = linearize(system, compiled, point);
+    const Eigen::VectorXcd lambda = Eigen::EigenSolver<Eigen::MatrixXd>(L.A).eigenvalues();
+    out.eigenvalues.assign(lambda.begin(), lambda.end());
+    if (!given_zeros) {
+      Eigen::JacobiSVD<Eigen::MatrixXd> svd(L.A);
+      svd.setThreshold(kZero);
+      zeros = static_cast<std::size_t>(L.A.rows() - svd.rank());
+    }
+    out.zeros = zeros;
+  } catch (const std::exception& e) {
+    out.failure = e.what();
+    out.growth = std::numeric_limits<double>::quiet_NaN();
+    return out;
+  }
+  std::sort(out.eigenvalues.begin(), out.eigenvalues.end(), [](auto a, auto b) {
+    return a.real() != b.real() ? a.real() > b.real() : a.imag() > b.imag();
+  });
+  // the growth: the largest real part but for the `zeros` eigenvalues nearest 0
+  std::vector<std::complex<double>> rest = out.eigenvalues;
+  std::sort(rest.begin(), rest.end(), [](auto a, auto b) { return std::abs(a) < std::abs(b); });
+  out.growth = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = std::min(zeros, rest.size()); k < rest.size(); ++k) {
+    out.growth = std::max(out.growth, rest[k].real());
+  }
+  return out;
+}
+
+}  // namespace
+
+ParameterSweep sweep_modes(const System& system, const CompiledSystem& compiled,
+                           const std::vector<GivenValue>& given,
+                           const std::vector<std::pair<std::string, double>>& parameters,
+                           const std::string& name, double from, double to, std::size_t count) {
+  if (!system.find_parameter(name)) {
+    throw std::invalid_argument("--sweep " + name + ": not a parameter of the model");
+  }
+  if (count < 2) throw std::invalid_argument("--sweep needs at least 2 values");
+  ParameterSweep out;
+  out.parameter = name;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double value = k + 1 == count ? to
+                                        : from + (to - from) * static_cast<double>(k) /
+                                                     static_cast<double>(count - 1);
+    out.points.push_back(point_at(system, compiled, given, parameters, name, value));
+  }
+  // Where the growth changes sign between neighbours: bisection on it.
+  for (std::size_t k = 0; k + 1 < count; ++k) {
+    const SweepPoint &a = out.points[k], &b = out.points[k + 1];
+    if (!(std::isfinite(a.growth) && std::isfinite(b.growth)) || (a.growth > 0) == (b.growth > 0)) {
+      continue;
+    }
+    double lo = a.value, hi = b.value;
+    const bool lo_growing = a.growth > 0;
+    bool failed = false;
+    while (std::abs(hi - lo) > 1e-12 * (1.0 + std::abs(lo))) {
+      const double mid = 0.5 * (lo + hi);
+      if (mid == lo || mid == hi) break;
+      const SweepPoint m =
+          point_at(system, compiled, given, parameters, name, mid, std::min(a.zeros, b.zeros));
+      if (!std::isfinite(m.growth)) {
+        failed = true;
+        break;
+      }
+      ((m.growth > 0) == lo_growing ? lo : hi) = mid;
+    }
+    if (!failed) out.boundaries.push_back({0.5 * (lo + hi), lo_growing});
+  }
+  return out;
+}
+
+}  // namespace unidyn

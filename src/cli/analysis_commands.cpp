@@ -1,0 +1,161 @@
+// The analysis commands: an operating point, its linearisation, its modes, and sweeps of them.
+#include "analysis_commands.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <iostream>
+
+#include "analysis_report.hpp"
+#include "command_model.hpp"
+#include "unidyn/analysis/parameter_sweep.hpp"
+#include "unidyn/equations/lagrange.hpp"
+#include "unidyn/integrate/simulation.hpp"
+#include "unidyn/io/csv.hpp"
+
+namespace unidyn::cli {
+namespace {
+
+// --set: parameters only (the operating point's values go with --at).
+std::vector<std::pair<std::string, double>> parameter_sets(const System& system,
+                                                           const std::vector<std::string>& sets) {
+  const auto overrides = parse_sets(sets);
+  for (const auto& [name, value] : overrides) {
+    if (!system.find_parameter(name)) {
+      throw std::invalid_argument("--set " + name +
+                                  ": not a parameter (give coordinates and rates with --at)");
+    }
+  }
+  return overrides;
+}
+
+// A finite number, all of `text`.
+std::optional<double> finite(std::string_view text) {
+  double value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return {};
+  return value;
+}
+
+// --sweep PARAM=FROM:TO:COUNT.
+struct SweepRange {
+  std::string parameter;
+  double from = 0, to = 0;
+  std::size_t count = 0;
+};
+SweepRange parse_sweep(const std::string& text) {
+  const std::size_t eq = text.find('='), c1 = text.find(':', eq), c2 = text.find(':', c1 + 1);
+  const auto bad = [&] {
+    return std::invalid_argument("--sweep " + text +
+                                 ": expected PARAM=FROM:TO:COUNT (numbers, COUNT an integer >= 2)");
+  };
+  if (eq == std::string::npos || c1 == std::string::npos || c2 == std::string::npos) throw bad();
+  const auto from = finite(std::string_view(text).substr(eq + 1, c1 - eq - 1));
+  const auto to = finite(std::string_view(text).substr(c1 + 1, c2 - c1 - 1));
+  std::size_t count = 0;
+  const std::string_view tail = std::string_view(text).substr(c2 + 1);
+  const auto [end, error] = std::from_chars(tail.data(), tail.data() + tail.size(), count);
+  if (!from || !to || error != std::errc() || end != tail.data() + tail.size() || count < 2 ||
+      count > 1'000'000) {
+    throw bad();
+  }
+  return {text.substr(0, eq), *from, *to, count};
+}
+
+// modes --sweep: one CSV row per value, the stability boundaries on standard error.
+int run_sweep(const AnalysisCommands& c, const System& system, const CompiledSystem& compiled,
+              const std::vector<GivenValue>& given,
+              const std::vector<std::pair<std::string, double>>& sets) {
+  const SweepRange range = parse_sweep(c.sweep);
+  const ParameterSweep sweep = sweep_modes(system, compiled, given, sets, range.parameter,
+                                           range.from, range.to, range.count);
+  std::size_t size = 0;
+  for (const SweepPoint& p : sweep.points) size = std::max(size, p.eigenvalues.size());
+  std::vector<std::string> header{range.parameter, "growth"};
+  for (std::size_t k = 1; k <= size; ++k) {
+    header.push_back(fmt::format("re{}", k));
+    header.push_back(fmt::format("im{}", k));
+  }
+  CsvWriter csv(c.output.empty() ? "-" : c.output);
+  csv.header(header);
+  int failures = 0;
+  for (const SweepPoint& p : sweep.points) {
+    std::vector<double> row{p.value, p.growth};
+    for (std::size_t k = 0; k < size; ++k) {
+      const bool has = k < p.eigenvalues.size();
+      row.push_back(has ? p.eigenvalues[k].real() : NAN);
+      row.push_back(has ? p.eigenvalues[k].imag() : NAN);
+    }
+    csv.row(row);
+    if (!p.failure.empty()) {
+      ++failures;
+      fmt::print(stderr, "{} = {}: {}\n", range.parameter, p.value, p.failure);
+    }
+  }
+  csv.close();
+  for (const StabilityBoundary& b : sweep.boundaries) {
+    fmt::print(
+        stderr, "stability changes at {} = {:.12g}: {}\n", range.parameter, b.value,
+        b.becomes_stable ? "the last growing mode decays above it" : "a mode grows above it");
+  }
+  if (sweep.boundaries.empty()) fmt::print(stderr, "stability does not change in the range\n");
+  return failures == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
+  const auto common = [&](CLI::App* command) {
+    command->add_option("model", c.model, "MODEL file or bundled model name")->required();
+    command
+        ->add_option("--at", c.at,
+                     "NAME=VALUE of the operating point: q or der(q), VALUE a number or an "
+                     "expression in the parameters; values not given start at 0 and are completed "
+                     "from the constraints")
+        ->required();
+    command->add_option("--set", c.sets, "NAME=NUMBER: a parameter");
+    command->add_option("--format", c.format, "text | json")
+        ->check(CLI::IsMember({"text", "json"}))
+        ->capture_default_str();
+  };
+  c.linearize = app.add_subcommand(
+      "linearize", "Linearise the equations of motion about an equilibrium or a steady motion");
+  common(c.linearize);
+  c.modes = app.add_subcommand(
+      "modes", "Eigenvalues, mode shapes, frequencies and the stability of an operating point");
+  common(c.modes);
+  c.modes->add_option("--sweep", c.sweep,
+                      "PARAM=FROM:TO:COUNT: eigenvalues at COUNT values of a parameter, as CSV, "
+                      "and where stability changes (on standard error)");
+  c.modes->add_option("-o,--output", c.output,
+                      "with --sweep: the CSV file (default: standard output)");
+}
+
+int run_analysis_commands(const AnalysisCommands& c) {
+  if (!c.linearize->parsed() && !c.modes->parsed()) return -1;
+  const CommandModel model = read_command_model(c.model);
+  const System& system = model.system;
+  const auto sets = parameter_sets(system, c.sets);
+  const std::vector<GivenValue> given = parse_given_values(system, c.at);
+  if (!c.sweep.empty() && c.format != "text") {
+    throw std::invalid_argument("--sweep writes CSV: drop --format");
+  }
+  const CompiledSystem compiled(system, lagrange_equations(system));
+  if (!c.sweep.empty()) return run_sweep(c, system, compiled, given, sets);
+  const OperatingPoint point =
+      operating_point(system, compiled, given, initial_state(system, sets).parameters);
+  const Linearization linearization = linearize(system, compiled, point);
+  const bool modes = c.modes->parsed();
+  const ModeAnalysis analysis = modes ? analyse_modes(linearization) : ModeAnalysis{};
+  if (c.format == "json") {
+    std::cout << analysis_json(system, point, linearization, modes ? &analysis : nullptr);
+    return 0;
+  }
+  std::cout << operating_point_text(system, point, linearization)
+            << linearization_text(linearization);
+  if (modes) std::cout << modes_text(linearization, analysis);
+  return 0;
+}
+
+}  // namespace unidyn::cli

@@ -1,0 +1,28 @@
+// `unidyn linearize` and `unidyn modes`: the analysis layer on the command line.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+namespace unidyn::cli {
+
+struct AnalysisCommands {
+  CLI::App* linearize = nullptr;
+  CLI::App* modes = nullptr;
+
+  std::string model;
+  std::vector<std::string> at;    // NAME=VALUE of the operating point
+  std::vector<std::string> sets;  // NAME=NUMBER of parameters
+  std::string format = "text";
+  std::string sweep;   // modes: PARAM=FROM:TO:COUNT
+  std::string output;  // modes --sweep: the CSV file
+};
+
+void add_analysis_commands(CLI::App& app, AnalysisCommands& commands);
+
+// Runs whichever of the commands was parsed; returns the exit status (0 success, 1 failure, 2 bad
+// input), or -1 when neither was.
+int run_analysis_commands(const AnalysisCommands& commands);
+
+}  // namespace unidyn::cli

@@ -1,0 +1,226 @@
+// Text and JSON of an operating point, its linearisation and its modes.
+#include "analysis_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "unidyn/io/json_text.hpp"
+#include "unidyn/numeric/number_text.hpp"
+
+namespace unidyn::cli {
+namespace {
+
+// A number with `digits` significant digits; zero (of either sign) as 0.
+std::string number(double x, int digits = 12) {
+  if (x == 0.0) return "0";
+  std::array<char, 40> buffer{};
+  const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), x,
+                                 std::chars_format::general, digits)
+                       .ptr;
+  return std::string(buffer.data(), end);
+}
+
+// a, b i, a+b i or a-b i with `digits` significant digits.
+std::string complex_text(std::complex<double> z, int digits) {
+  if (z.imag() == 0.0) return number(z.real(), digits);
+  const std::string imaginary = number(std::abs(z.imag()), digits) + "i";
+  if (z.real() == 0.0) return (z.imag() < 0 ? "-" : "") + imaginary;
+  return number(z.real(), digits) + (z.imag() < 0 ? "-" : "+") + imaginary;
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+// A matrix as a table: the column names above, each row's name on its left.
+std::string table(const Eigen::MatrixXd& A, const std::vector<std::string>& rows,
+                  const std::vector<std::string>& columns) {
+  std::vector<std::vector<std::string>> cells(static_cast<std::size_t>(A.rows()));
+  std::size_t width = 0, label = 0;
+  for (const auto& c : columns) width = std::max(width, c.size());
+  for (const auto& r : rows) label = std::max(label, r.size());
+  for (Eigen::Index i = 0; i < A.rows(); ++i) {
+    for (Eigen::Index j = 0; j < A.cols(); ++j) {
+      cells[static_cast<std::size_t>(i)].push_back(number(A(i, j)));
+      width = std::max(width, cells[static_cast<std::size_t>(i)].back().size());
+    }
+  }
+  std::string out = "  " + std::string(label, ' ');
+  for (const auto& c : columns) out += "  " + std::string(width - c.size(), ' ') + c;
+  out += '\n';
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    out += "  " + rows[i] + std::string(label - rows[i].size(), ' ');
+    for (const auto& cell : cells[i]) out += "  " + std::string(width - cell.size(), ' ') + cell;
+    out += '\n';
+  }
+  return out;
+}
+
+// The values given and the coordinates' and rates' names.
+std::vector<std::string> given_values(const System& system, const OperatingPoint& point) {
+  std::vector<std::string> out;
+  const auto& q = system.coordinates();
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (point.q_given[i])
+      out.push_back(q[i].name + " = " + number(point.q[static_cast<Eigen::Index>(i)]));
+  }
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (point.qdot_given[i]) {
+      out.push_back("der(" + q[i].name + ") = " + number(point.qdot[static_cast<Eigen::Index>(i)]));
+    }
+  }
+  return out;
+}
+
+// What a mode does in time; a real part within `tolerance` of 0 is 0.
+std::string behaviour(const Mode& mode, double tolerance) {
+  const double re = std::abs(mode.eigenvalue.real()) <= tolerance ? 0.0 : mode.eigenvalue.real();
+  if (mode.damped_frequency == 0.0) {
+    if (re == 0.0) return "neutral";
+    return std::string(re < 0 ? "decays" : "grows") + ", time constant " +
+           number(1 / std::abs(re), 6) + " s";
+  }
+  return "natural frequency " + number(mode.natural_frequency, 6) + " rad/s, damped " +
+         number(mode.damped_frequency, 6) + " rad/s (" +
+         number(mode.damped_frequency / (2 * std::numbers::pi), 6) + " Hz), " +
+         (re == 0.0 ? std::string("undamped") : "damping ratio " + number(mode.damping_ratio, 6));
+}
+
+std::string json_matrix(const Eigen::MatrixXd& A) {
+  std::string out = "[";
+  for (Eigen::Index i = 0; i < A.rows(); ++i) {
+    out += i ? ", [" : "[";
+    for (Eigen::Index j = 0; j < A.cols(); ++j) out += (j ? ", " : "") + json_number(A(i, j));
+    out += "]";
+  }
+  return out + "]";
+}
+
+std::string json_names(const std::vector<std::string>& names) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + quoted(names[i]);
+  return out + "]";
+}
+
+}  // namespace
+
+std::string operating_point_text(const System& system, const OperatingPoint& point,
+                                 const Linearization& linearization) {
+  std::string out = "operating point of " + system.name + "\n";
+  const std::vector<std::string> given = given_values(system, point);
+  out +=
+      "  given: " + (given.empty() ? std::string("nothing (all values 0)") : joined(given)) + "\n";
+  if (!point.computed.empty())
+    out += "  computed from the constraints: " + joined(point.computed) + "\n";
+  if (!linearization.dependent_coordinates.empty()) {
+    out += "  dependent coordinates: " + joined(linearization.dependent_coordinates) + "\n";
+  }
+  if (!linearization.dependent_rates.empty()) {
+    out += "  dependent rates: " + joined(linearization.dependent_rates) + "\n";
+  }
+  if (!linearization.ignorable.empty()) {
+    out += "  ignorable, dropped: " + joined(linearization.ignorable) + "\n";
+  }
+  return out;
+}
+
+std::string linearization_text(const Linearization& L) {
+  std::string out = "state x = (" + joined(L.state) + ")\nx' = A x, A =\n";
+  std::vector<std::string> rows;
+  for (const auto& s : L.state) rows.push_back("d/dt " + s);
+  out += table(L.A, rows, L.state);
+  if (L.second_order) {
+    out += "M q'' + C q' + K q = 0 (perturbations of every coordinate), M =\n";
+    out += table(L.second_order->M, L.coordinates, L.coordinates);
+    out += "C =\n" + table(L.second_order->C, L.coordinates, L.coordinates);
+    out += "K =\n" + table(L.second_order->K, L.coordinates, L.coordinates);
+  }
+  return out;
+}
+
+std::string modes_text(const Linearization& L, const ModeAnalysis& modes) {
+  std::string out = fmt::format(
+      "modes (eigenvalues of A; complex ones in pairs, lambda and its conjugate; real parts "
+      "below {} shown as 0, shape entries below 1e-9 left out):\n",
+      number(modes.tolerance, 3));
+  for (std::size_t k = 0; k < modes.modes.size(); ++k) {
+    const Mode& mode = modes.modes[k];
+    const double re =
+        std::abs(mode.eigenvalue.real()) <= modes.tolerance ? 0.0 : mode.eigenvalue.real();
+    const std::string lambda = mode.damped_frequency == 0.0 ? number(re)
+                               : re == 0.0
+                                   ? "±" + number(mode.damped_frequency) + "i"
+                                   : number(re) + " ± " + number(mode.damped_frequency) + "i";
+    out += fmt::format("  {}. lambda = {}: {}\n", k + 1, lambda, behaviour(mode, modes.tolerance));
+    std::vector<std::string> shape;
+    for (std::size_t i = 0; i < mode.shape.size(); ++i) {
+      // the largest entry is 1: below 1e-9, round-off
+      const auto snap = [](double x) { return std::abs(x) < 1e-9 ? 0.0 : x; };
+      const std::complex<double> z(snap(mode.shape[i].real()), snap(mode.shape[i].imag()));
+      if (z == 0.0) continue;
+      shape.push_back(L.coordinates[i] + " " + complex_text(z, 6));
+    }
+    out += std::string("     shape") + (mode.of_rates ? " (of the rates)" : "") + ": " +
+           (shape.empty() ? std::string("none") : joined(shape)) + "\n";
+  }
+  out += "stability: " + to_string(modes.verdict) + ": " + modes.reason + "\n";
+  return out;
+}
+
+std::string analysis_json(const System& system, const OperatingPoint& point, const Linearization& L,
+                          const ModeAnalysis* modes) {
+  const auto& q = system.coordinates();
+  std::string out = "{\n  \"model\": " + quoted(system.name) + ",\n  \"operating_point\": {";
+  const auto values = [&](const Eigen::VectorXd& v, const std::string& prefix,
+                          const std::string& suffix) {
+    std::string s = "{";
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      s += (i ? ", " : "") + quoted(prefix + q[i].name + suffix) + ": " +
+           json_number(v[static_cast<Eigen::Index>(i)]);
+    }
+    return s + "}";
+  };
+  out += "\"coordinates\": " + values(point.q, "", "") +
+         ",\n    \"rates\": " + values(point.qdot, "der(", ")") +
+         ",\n    \"accelerations\": " + values(point.qddot, "der(der(", "))") + "},\n";
+  out += "  \"computed\": " + json_names(point.computed) + ",\n";
+  out += "  \"state\": " + json_names(L.state) + ",\n  \"A\": " + json_matrix(L.A) + ",\n";
+  out += "  \"ignorable\": " + json_names(L.ignorable) +
+         ",\n  \"dependent_coordinates\": " + json_names(L.dependent_coordinates) +
+         ",\n  \"dependent_rates\": " + json_names(L.dependent_rates);
+  if (L.second_order) {
+    out += ",\n  \"coordinates\": " + json_names(L.coordinates) +
+           ",\n  \"M\": " + json_matrix(L.second_order->M) +
+           ",\n  \"C\": " + json_matrix(L.second_order->C) +
+           ",\n  \"K\": " + json_matrix(L.second_order->K);
+  }
+  if (modes) {
+    out += ",\n  \"modes\": [";
+    for (std::size_t k = 0; k < modes->modes.size(); ++k) {
+      const Mode& m = modes->modes[k];
+      out += std::string(k ? ",\n" : "\n") + "    {\"re\": " + json_number(m.eigenvalue.real()) +
+             ", \"im\": " + json_number(m.eigenvalue.imag()) +
+             ", \"natural_frequency\": " + json_number(m.natural_frequency) +
+             ", \"damping_ratio\": " + json_number(m.damping_ratio) +
+             ", \"of_rates\": " + (m.of_rates ? "true" : "false") + ", \"shape\": {";
+      for (std::size_t i = 0; i < m.shape.size(); ++i) {
+        out += (i ? ", " : "") + quoted(L.coordinates[i]) + ": [" + json_number(m.shape[i].real()) +
+               ", " + json_number(m.shape[i].imag()) + "]";
+      }
+      out += "}}";
+    }
+    out += "\n  ],\n  \"stability\": " + quoted(to_string(modes->verdict)) +
+           ",\n  \"reason\": " + quoted(modes->reason);
+  }
+  return out + "\n}\n";
+}
+
+}  // namespace unidyn::cli

@@ -1,0 +1,27 @@
+// The analysis commands' output: the operating point, the linearisation and the modes as text or
+// JSON. Numbers: twelve significant digits in text, the shortest exact form in JSON.
+#pragma once
+
+#include <string>
+
+#include "unidyn/analysis/linearization.hpp"
+#include "unidyn/analysis/modes.hpp"
+
+namespace unidyn::cli {
+
+// The point, given and computed values, then what was eliminated and dropped.
+std::string operating_point_text(const System& system, const OperatingPoint& point,
+                                 const Linearization& linearization);
+// The state, A, and (without constraints) M, C and K.
+std::string linearization_text(const Linearization& linearization);
+// The eigenvalues with their frequencies, damping ratios and shapes, then the verdict.
+std::string modes_text(const Linearization& linearization, const ModeAnalysis& modes);
+
+// One JSON object: "model", "operating_point" {coordinates, rates, accelerations}, "computed",
+// "state", "A", "ignorable", "dependent_coordinates", "dependent_rates", "M", "C", "K" (without
+// constraints), and with modes "modes" [{re, im, natural_frequency, damping_ratio, shape {name:
+// [re, im]}}], "stability", "reason".
+std::string analysis_json(const System& system, const OperatingPoint& point,
+                          const Linearization& linearization, const ModeAnalysis* modes);
+
+}  // namespace unidyn::cli

@@ -1,0 +1,34 @@
+// The model a command names (a file, or a bundled model by name) and its NAME=VALUE settings.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "unidyn/model/system.hpp"
+
+namespace unidyn::cli {
+
+namespace fs = std::filesystem;
+
+// The bundled models' directory: $UNIDYN_MODELS or the source tree's models/; its models, sorted.
+fs::path models_directory();
+std::vector<fs::path> bundled_models();
+
+// A model argument: a file, or the name of a bundled model; neither is bad input
+// (std::invalid_argument), with the bundled model of the nearest name when one is close enough.
+std::string resolve_model(const std::string& argument);
+
+// --set NAME=NUMBER texts; anything else is bad input (std::invalid_argument).
+std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::string>& sets);
+
+// The model named on the command line, read once, and the text it was read from.
+struct CommandModel {
+  System system;
+  std::string text;
+  std::string path;
+};
+CommandModel read_command_model(const std::string& argument);
+
+}  // namespace unidyn::cli

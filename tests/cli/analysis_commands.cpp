@@ -1,0 +1,50 @@
+// `unidyn linearize` and `unidyn modes` as a user runs them: the same output on every run, bad
+// input refused with exit status 2, a sweep's CSV and its boundaries.
+#include <algorithm>
+
+#include "cli/cli_support.hpp"
+
+namespace unidyn::cli_test {
+namespace {
+
+const std::string kBicycleAt = " --at 'der(thR)=v/rR' 'der(phi)=0' 'der(delta)=0' 'der(psi)=0'";
+
+TEST(AnalysisCommands, SameOutputOnEveryRun) {
+  for (const std::string& command : std::vector<std::string>{
+           "linearize double-pendulum --at theta1=0 theta2=0", "modes bicycle" + kBicycleAt,
+           "modes spring-chain --at x1=0 x2=0 --format json",
+           "linearize torque-free-body --at 'der(psi)=5' --format json"}) {
+    const Outcome first = run(command);
+    ASSERT_EQ(first.status, 0) << command << ": " << first.err;
+    const Outcome again = run(command, "UNIDYN_RANDOM_LAYOUT=1");
+    EXPECT_EQ(again.out, first.out) << command;
+  }
+  const Outcome modes = run("modes bicycle" + kBicycleAt);
+  EXPECT_TRUE(contains(modes.out, "ignorable, dropped: x, y, psi, thR, thF")) << modes.out;
+  EXPECT_TRUE(contains(modes.out, "stability: linearly stable")) << modes.out;
+}
+
+TEST(AnalysisCommands, BadInputRefused) {
+  for (const std::string command :
+       {"modes double-pendulum --at theta1=0.3", "modes double-pendulum --at nope=1",
+        "modes double-pendulum --at theta1=0 --set theta2=1",
+        "modes double-pendulum --at theta1=0 --sweep g=1:2", "linearize heavy-top --at theta=0",
+        "modes double-pendulum --at theta1=0 --sweep g=1:2:3 --format json"}) {
+    const Outcome r = run(command);
+    EXPECT_EQ(r.status, 2) << command << ": " << r.err;
+    EXPECT_TRUE(contains(r.err, "unidyn: error:")) << command << ": " << r.err;
+    EXPECT_EQ(r.out, "") << command;
+  }
+}
+
+TEST(AnalysisCommands, SweepWritesRowsAndBoundaries) {
+  const Outcome r = run("modes bicycle" + kBicycleAt + " --sweep v=0:10:21");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.out.starts_with("v,growth,re1,im1,")) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 22);
+  EXPECT_TRUE(contains(r.err, "stability changes at v = 4.29238253634")) << r.err;
+  EXPECT_TRUE(contains(r.err, "stability changes at v = 6.02426201539")) << r.err;
+}
+
+}  // namespace
+}  // namespace unidyn::cli_test
