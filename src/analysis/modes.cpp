@@ -169,6 +169,15 @@ ModeAnalysis analyse_modes(const Linearization& L) {
     return out;
   }
   out.verdict = Stability::linearly_stable;
+  Index on_axis_count = 0;
+  for (Index k = 0; k < s; ++k) on_axis_count += std::abs(lambda[k].real()) <= tolerance ? 1 : 0;
+  if (on_axis_count == zeros) {
+    out.reason = "every eigenvalue but " +
+                 std::string(zeros > 1 ? "the zero ones" : "the zero one") +
+                 " (neighbouring steady motions) has a negative real part: a perturbation decays "
+                 "to a neighbouring steady motion";
+    return out;
+  }
   out.reason = "no eigenvalue has a positive real part; on the imaginary axis: " + on_axis +
                (zeros > 0 ? " (zero: a neighbouring steady motion, neutral)" : "") +
                "; whether the nonlinear terms keep the motion bounded is not decided here";

@@ -19,16 +19,27 @@ namespace {
 // passes through 0 (the bicycle's capsize speed) it would be counted too, and the boundary moved.
 constexpr double kZero = 1e-12;
 
+// A growth above this fraction of the largest |λ| (at least 1) is growth, not round-off; a boundary
+// where a real part passes through 0 moves by it over the real part's slope (1e-13 · 16 / 0.18 for
+// the bicycle's capsize), and one where a pair turns from real to imaginary by its square.
+constexpr double kGrowing = 1e-13;
+
 // The eigenvalues at one value of the parameter, or why there are none; the growth leaving out
 // `zeros` eigenvalues nearest 0, or as many as A's zero singular values when not given.
 SweepPoint point_at(const System& system, const CompiledSystem& compiled,
-                    const std::vector<GivenValue>& given,
+                    std::vector<GivenValue> given,
                     std::vector<std::pair<std::string, double>> parameters, const std::string& name,
                     double value, std::optional<std::size_t> given_zeros = std::nullopt) {
   SweepPoint out;
   out.value = value;
   std::size_t zeros = given_zeros.value_or(0);
-  parameters.emplace_back(name, value);
+  if (system.find_parameter(name)) {
+    parameters.emplace_back(name, value);
+  } else {
+    // a value of the operating point: given (in place of what --at said of it)
+    std::erase_if(given, [&](const GivenValue& g) { return g.name == name; });
+    given.push_back({name, GiNaC::numeric(value)});
+  }
   try {
     const OperatingPoint point =
         operating_point(system, compiled, given, initial_state(system, parameters).parameters);
@@ -56,6 +67,9 @@ SweepPoint point_at(const System& system, const CompiledSystem& compiled,
   for (std::size_t k = std::min(zeros, rest.size()); k < rest.size(); ++k) {
     out.growth = std::max(out.growth, rest[k].real());
   }
+  // growing beyond round-off: an oscillation's real part is ±1e-16 of it when nothing damps it
+  const double largest = rest.empty() ? 0.0 : std::abs(rest.back());
+  out.growing = out.growth > kGrowing * std::max(1.0, largest);
   return out;
 }
 
@@ -65,8 +79,12 @@ ParameterSweep sweep_modes(const System& system, const CompiledSystem& compiled,
                            const std::vector<GivenValue>& given,
                            const std::vector<std::pair<std::string, double>>& parameters,
                            const std::string& name, double from, double to, std::size_t count) {
-  if (!system.find_parameter(name)) {
-    throw std::invalid_argument("--sweep " + name + ": not a parameter of the model");
+  const bool coordinate =
+      system.find_coordinate(name) || (name.starts_with("der(") && name.ends_with(")") &&
+                                       system.find_coordinate(name.substr(4, name.size() - 5)));
+  if (!system.find_parameter(name) && !coordinate) {
+    throw std::invalid_argument("--sweep " + name +
+                                ": not a parameter, coordinate or der(coordinate) of the model");
   }
   if (count < 2) throw std::invalid_argument("--sweep needs at least 2 values");
   ParameterSweep out;
@@ -80,22 +98,20 @@ ParameterSweep sweep_modes(const System& system, const CompiledSystem& compiled,
   // Where the growth changes sign between neighbours: bisection on it.
   for (std::size_t k = 0; k + 1 < count; ++k) {
     const SweepPoint &a = out.points[k], &b = out.points[k + 1];
-    if (!(std::isfinite(a.growth) && std::isfinite(b.growth)) || (a.growth > 0) == (b.growth > 0)) {
-      continue;
-    }
+    if (!a.failure.empty() || !b.failure.empty() || a.growing == b.growing) continue;
     double lo = a.value, hi = b.value;
-    const bool lo_growing = a.growth > 0;
+    const bool lo_growing = a.growing;
     bool failed = false;
     while (std::abs(hi - lo) > 1e-12 * (1.0 + std::abs(lo))) {
       const double mid = 0.5 * (lo + hi);
       if (mid == lo || mid == hi) break;
       const SweepPoint m =
           point_at(system, compiled, given, parameters, name, mid, std::min(a.zeros, b.zeros));
-      if (!std::isfinite(m.growth)) {
+      if (!m.failure.empty()) {
         failed = true;
         break;
       }
-      ((m.growth > 0) == lo_growing ? lo : hi) = mid;
+      (m.growing == lo_growing ? lo : hi) = mid;
     }
     if (!failed) out.boundaries.push_back({0.5 * (lo + hi), lo_growing});
   }

@@ -48,7 +48,7 @@ SweepRange parse_sweep(const std::string& text) {
   const std::size_t eq = text.find('='), c1 = text.find(':', eq), c2 = text.find(':', c1 + 1);
   const auto bad = [&] {
     return std::invalid_argument("--sweep " + text +
-                                 ": expected PARAM=FROM:TO:COUNT (numbers, COUNT an integer >= 2)");
+                                 ": expected NAME=FROM:TO:COUNT (numbers, COUNT an integer >= 2)");
   };
   if (eq == std::string::npos || c1 == std::string::npos || c2 == std::string::npos) throw bad();
   const auto from = finite(std::string_view(text).substr(eq + 1, c1 - eq - 1));
@@ -126,8 +126,9 @@ void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
       "modes", "Eigenvalues, mode shapes, frequencies and the stability of an operating point");
   common(c.modes);
   c.modes->add_option("--sweep", c.sweep,
-                      "PARAM=FROM:TO:COUNT: eigenvalues at COUNT values of a parameter, as CSV, "
-                      "and where stability changes (on standard error)");
+                      "NAME=FROM:TO:COUNT: eigenvalues at COUNT values of a parameter, or of a "
+                      "coordinate or rate of the operating point, as CSV, and where stability "
+                      "changes (on standard error)");
   c.modes->add_option("-o,--output", c.output,
                       "with --sweep: the CSV file (default: standard output)");
 }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "support/linearized_model.hpp"
@@ -20,7 +21,8 @@ TEST(Modes, DoublePendulumFrequenciesAndShapes) {
   const LinearizedModel down("double-pendulum", {"theta1=0", "theta2=0"}, {{"l1", l}, {"l2", l}});
   const ModeAnalysis modes = analyse_modes(down.linearization);
   ASSERT_EQ(modes.modes.size(), 2u);
-  const double slow = std::sqrt(g / l * (2 - std::sqrt(2.0))), fast = std::sqrt(g / l * (2 + std::sqrt(2.0)));
+  const double slow = std::sqrt(g / l * (2 - std::sqrt(2.0))),
+               fast = std::sqrt(g / l * (2 + std::sqrt(2.0)));
   EXPECT_NEAR(modes.modes[0].damped_frequency, slow, 1e-12);
   EXPECT_NEAR(modes.modes[1].damped_frequency, fast, 1e-12);
   EXPECT_NEAR(modes.modes[0].natural_frequency, slow, 1e-12);
@@ -41,7 +43,8 @@ TEST(Modes, DoublePendulumFrequenciesAndShapes) {
 TEST(Modes, RotationAboutPrincipalAxes) {
   const double w = 5;
   const auto rotation = [&](double l1, double l2, double l3) {
-    const LinearizedModel body("torque-free-body", {"der(psi)=5"}, {{"l1", l1}, {"l2", l2}, {"l3", l3}});
+    const LinearizedModel body("torque-free-body", {"der(psi)=5"},
+                               {{"l1", l1}, {"l2", l2}, {"l3", l3}});
     EXPECT_EQ(body.linearization.ignorable, (std::vector<std::string>{"psi"}));
     return analyse_modes(body.linearization);
   };
@@ -80,9 +83,36 @@ TEST(Modes, RotatingHoopAtItsBifurcation) {
   EXPECT_EQ(analyse_modes(above.linearization).verdict, Stability::unstable);
 }
 
+// The thin disk rolling upright at spin Ω: the lean oscillates at ω² = ((I3 + m R²) I3 Ω²/I − m g
+// R) / (I + m R²), I = m R²/4, I3 = m R²/2; the top spinning upright at ω precesses at (C ω ± √(C²
+// ω² − 4 A_O m g l)) / (2 A_O), A_O = A + m l².
+TEST(Modes, RollingDiskAndSleepingTopFrequencies) {
+  const auto frequencies = [](const std::string& model, const std::vector<std::string>& at) {
+    std::vector<double> out;
+    for (const Mode& m : analyse_modes(LinearizedModel(model, at).linearization).modes) {
+      if (m.damped_frequency > 0) out.push_back(m.damped_frequency);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  const double m = 1, g = 9.81, R = 0.15, W = 10, I = m * R * R / 4, I3 = m * R * R / 2;
+  const auto disk =
+      frequencies("rolling-disk", {"theta=pi/2", "der(phi)=10", "der(psi)=0", "der(theta)=0"});
+  ASSERT_EQ(disk.size(), 1u);
+  EXPECT_NEAR(disk[0], std::sqrt(((I3 + m * R * R) * I3 * W * W / I - m * g * R) / (I + m * R * R)),
+              1e-10);
+  const double A_O = 0.004 + 0.05 * 0.05, C = 0.002, w = 60,
+               root = std::sqrt(C * C * w * w - 4 * A_O * g * 0.05);
+  const auto top = frequencies("sleeping-top", {"der(gamma)=spin"});
+  ASSERT_EQ(top.size(), 2u);
+  EXPECT_NEAR(top[0], (C * w - root) / (2 * A_O), 1e-10);
+  EXPECT_NEAR(top[1], (C * w + root) / (2 * A_O), 1e-10);
+}
+
 // The bicycle at 4.6 m/s rights itself: every mode decays but the one of neighbouring speeds.
 TEST(Modes, BicycleSelfStableAtFourPointSix) {
-  const LinearizedModel bike("bicycle", {"der(thR)=v/rR", "der(phi)=0", "der(delta)=0", "der(psi)=0"});
+  const LinearizedModel bike("bicycle",
+                             {"der(thR)=v/rR", "der(phi)=0", "der(delta)=0", "der(psi)=0"});
   const ModeAnalysis modes = analyse_modes(bike.linearization);
   EXPECT_EQ(modes.verdict, Stability::linearly_stable) << modes.reason;
   int zeros = 0;
@@ -95,7 +125,8 @@ TEST(Modes, BicycleSelfStableAtFourPointSix) {
     }
   }
   EXPECT_EQ(zeros, 1);
-  const LinearizedModel slow("bicycle", {"der(thR)=3/rR", "der(phi)=0", "der(delta)=0", "der(psi)=0"});
+  const LinearizedModel slow("bicycle",
+                             {"der(thR)=3/rR", "der(phi)=0", "der(delta)=0", "der(psi)=0"});
   EXPECT_EQ(analyse_modes(slow.linearization).verdict, Stability::unstable);  // weave grows
 }
 

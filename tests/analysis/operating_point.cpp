@@ -31,7 +31,8 @@ struct Model {
 TEST(OperatingPoint, GivenKeptTheRestCompleted) {
   const Model hoop("rotating-hoop");
   const OperatingPoint p = hoop.at({"phi=acos(-g/(R0*Omega^2))"});
-  EXPECT_NEAR(std::cos(hoop.q(p, "phi")), -9.81 / (0.5 * 6.264183905346329 * 6.264183905346329), 1e-15);
+  EXPECT_NEAR(std::cos(hoop.q(p, "phi")), -9.81 / (0.5 * 6.264183905346329 * 6.264183905346329),
+              1e-15);
   EXPECT_EQ(hoop.qdot(p, "phi"), 0.0);
   EXPECT_NEAR(p.qddot[0], 0.0, 1e-12);  // an equilibrium: the forces balance
 
@@ -49,13 +50,13 @@ TEST(OperatingPoint, GivenKeptTheRestCompleted) {
 TEST(OperatingPoint, BadValuesRefused) {
   const Model pendulum("double-pendulum");
   const System& s = pendulum.system;
-  EXPECT_THROW(parse_given_values(s, {"theta1"}), std::invalid_argument);          // no value
-  EXPECT_THROW(parse_given_values(s, {"g=1"}), std::invalid_argument);             // a parameter
-  EXPECT_THROW(parse_given_values(s, {"theta1=theta2"}), std::invalid_argument);   // a coordinate
-  EXPECT_THROW(parse_given_values(s, {"theta1=t"}), std::invalid_argument);        // time
+  EXPECT_THROW(parse_given_values(s, {"theta1"}), std::invalid_argument);         // no value
+  EXPECT_THROW(parse_given_values(s, {"g=1"}), std::invalid_argument);            // a parameter
+  EXPECT_THROW(parse_given_values(s, {"theta1=theta2"}), std::invalid_argument);  // a coordinate
+  EXPECT_THROW(parse_given_values(s, {"theta1=t"}), std::invalid_argument);       // time
   EXPECT_THROW(parse_given_values(s, {"theta1=1", "theta1=2"}), std::invalid_argument);
-  EXPECT_THROW(parse_given_values(s, {"theta1=sqrt("}), std::invalid_argument);    // a syntax error
-  EXPECT_THROW(pendulum.at({"theta1=sqrt(-g)"}), std::invalid_argument);           // not real
+  EXPECT_THROW(parse_given_values(s, {"theta1=sqrt("}), std::invalid_argument);  // a syntax error
+  EXPECT_THROW(pendulum.at({"theta1=sqrt(-g)"}), std::invalid_argument);         // not real
   // the top at the gimbal lock of its 3-1-3 angles: M is singular there
   const Model top("heavy-top");
   try {

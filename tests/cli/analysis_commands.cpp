@@ -1,6 +1,8 @@
 // `unidyn linearize` and `unidyn modes` as a user runs them: the same output on every run, bad
 // input refused with exit status 2, a sweep's CSV and its boundaries.
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include "cli/cli_support.hpp"
 
@@ -42,8 +44,15 @@ TEST(AnalysisCommands, SweepWritesRowsAndBoundaries) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(r.out.starts_with("v,growth,re1,im1,")) << r.out;
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 22);
-  EXPECT_TRUE(contains(r.err, "stability changes at v = 4.29238253634")) << r.err;
-  EXPECT_TRUE(contains(r.err, "stability changes at v = 6.02426201539")) << r.err;
+  // the two boundaries, as printed (15 digits), against Table 2 of Meijaard et al. (2007)
+  std::vector<double> speeds;
+  for (std::size_t at = r.err.find("changes at v = "); at != std::string::npos;
+       at = r.err.find("changes at v = ", at + 1)) {
+    speeds.push_back(std::stod(r.err.substr(at + 15)));
+  }
+  ASSERT_EQ(speeds.size(), 2u) << r.err;
+  EXPECT_NEAR(speeds[0], 4.29238253634111, 1e-10);
+  EXPECT_NEAR(speeds[1], 6.02426201538837, 1e-10);
 }
 
 }  // namespace
