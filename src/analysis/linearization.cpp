@@ -380,10 +380,14 @@ Linearization linearize(const System& system, const CompiledSystem& compiled,
     }
   }
 
-  // Without constraints, the second-order form too.
-  if (m == 0) {
-    out.second_order =
-        SecondOrderForm{M, at.balance.middleCols(1 + n, n), at.balance.middleCols(1, n)};
+  // M, C and K in all coordinates; without constraints, the equations themselves.
+  out.all_coordinates =
+      SecondOrderForm{M, at.balance.middleCols(1 + n, n), at.balance.middleCols(1, n)};
+  if (m == 0) out.second_order = out.all_coordinates;
+  for (Index k = 0; k < m; ++k) {
+    out.velocity_constraints = out.velocity_constraints ||
+                               (point.active[static_cast<std::size_t>(k)] &&
+                                !compiled.is_position_constraint()[static_cast<std::size_t>(k)]);
   }
   return out;
 }

@@ -9,6 +9,7 @@
 
 #include "analysis_report.hpp"
 #include "command_model.hpp"
+#include "unidyn/analysis/equilibria.hpp"
 #include "unidyn/analysis/parameter_sweep.hpp"
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/integrate/simulation.hpp"
@@ -129,12 +130,25 @@ void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
                       "NAME=FROM:TO:COUNT: eigenvalues at COUNT values of a parameter, or of a "
                       "coordinate or rate of the operating point, as CSV, and where stability "
                       "changes (on standard error)");
+  c.equilibria = app.add_subcommand(
+      "equilibria", "Find the equilibria (or steady motions at given rates) and their stability");
+  c.equilibria->add_option("model", c.model, "MODEL file or bundled model name")->required();
+  c.equilibria->add_option("--at", c.at,
+                           "NAME=VALUE: a coordinate held at a value, or a rate der(q) of the "
+                           "steady motions sought (rates not given are 0)");
+  c.equilibria->add_option("--set", c.sets, "NAME=NUMBER: a parameter");
+  c.equilibria->add_option("--starts", c.starts, "starting points of the search")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  c.equilibria->add_option("--format", c.format, "text | json")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
   c.modes->add_option("-o,--output", c.output,
                       "with --sweep: the CSV file (default: standard output)");
 }
 
 int run_analysis_commands(const AnalysisCommands& c) {
-  if (!c.linearize->parsed() && !c.modes->parsed()) return -1;
+  if (!c.linearize->parsed() && !c.modes->parsed() && !c.equilibria->parsed()) return -1;
   const CommandModel model = read_command_model(c.model);
   const System& system = model.system;
   const auto sets = parameter_sets(system, c.sets);
@@ -143,6 +157,13 @@ int run_analysis_commands(const AnalysisCommands& c) {
     throw std::invalid_argument("--sweep writes CSV: drop --format");
   }
   const CompiledSystem compiled(system, lagrange_equations(system));
+  if (c.equilibria->parsed()) {
+    const auto found = find_equilibria(system, compiled, given,
+                                       initial_state(system, sets).parameters, {c.starts});
+    std::cout << (c.format == "json" ? equilibria_json(system, found)
+                                     : equilibria_text(system, found, c.starts));
+    return 0;
+  }
   if (!c.sweep.empty()) return run_sweep(c, system, compiled, given, sets);
   const OperatingPoint point =
       operating_point(system, compiled, given, initial_state(system, sets).parameters);

@@ -1,4 +1,4 @@
-// `unidyn linearize` and `unidyn modes`: the analysis layer on the command line.
+// `unidyn equilibria`, `linearize` and `modes`: the analysis layer on the command line.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -10,19 +10,21 @@ namespace unidyn::cli {
 struct AnalysisCommands {
   CLI::App* linearize = nullptr;
   CLI::App* modes = nullptr;
+  CLI::App* equilibria = nullptr;
 
   std::string model;
   std::vector<std::string> at;    // NAME=VALUE of the operating point
   std::vector<std::string> sets;  // NAME=NUMBER of parameters
   std::string format = "text";
-  std::string sweep;   // modes: PARAM=FROM:TO:COUNT
-  std::string output;  // modes --sweep: the CSV file
+  std::string sweep;         // modes: PARAM=FROM:TO:COUNT
+  std::string output;        // modes --sweep: the CSV file
+  std::size_t starts = 200;  // equilibria: the starting points
 };
 
 void add_analysis_commands(CLI::App& app, AnalysisCommands& commands);
 
 // Runs whichever of the commands was parsed; returns the exit status (0 success, 1 failure, 2 bad
-// input), or -1 when neither was.
+// input), or -1 when none was.
 int run_analysis_commands(const AnalysisCommands& commands);
 
 }  // namespace unidyn::cli

@@ -223,4 +223,50 @@ std::string analysis_json(const System& system, const OperatingPoint& point, con
   return out + "\n}\n";
 }
 
+std::string equilibria_text(const System& system, const std::vector<Equilibrium>& found,
+                            std::size_t starts) {
+  std::string out = fmt::format("{} equilibri{} of {} ({} starts; angles in (-pi, pi]):\n",
+                                found.size(), found.size() == 1 ? "um" : "a", system.name, starts);
+  const auto& q = system.coordinates();
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    const Equilibrium& e = found[k];
+    std::vector<std::string> values;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const auto& ignorable = e.linearization.ignorable;
+      const bool dropped =
+          std::find(ignorable.begin(), ignorable.end(), q[i].name) != ignorable.end();
+      values.push_back(q[i].name + " = " + number(e.point.q[static_cast<Eigen::Index>(i)]) +
+                       (dropped ? " (ignorable)" : ""));
+    }
+    out += fmt::format("  {}. {}\n     {}: {}\n", k + 1, joined(values), to_string(e.modes.verdict),
+                       e.modes.reason);
+    if (e.potential_minimum) {
+      out += *e.potential_minimum
+                 ? "     K is positive definite on the constraints, a strict minimum of the "
+                   "potential (amended by any steady drive): stable (Lagrange-Dirichlet)\n"
+                 : "     K is not positive definite on the constraints: no minimum of the "
+                   "potential there\n";
+    }
+  }
+  return out;
+}
+
+std::string equilibria_json(const System& system, const std::vector<Equilibrium>& found) {
+  const auto& q = system.coordinates();
+  std::string out = "{\n  \"model\": " + quoted(system.name) + ",\n  \"equilibria\": [";
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    const Equilibrium& e = found[k];
+    out += std::string(k ? ",\n" : "\n") + "    {\"coordinates\": {";
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      out += (i ? ", " : "") + quoted(q[i].name) + ": " +
+             json_number(e.point.q[static_cast<Eigen::Index>(i)]);
+    }
+    out += "}, \"ignorable\": " + json_names(e.linearization.ignorable) +
+           ", \"stability\": " + quoted(to_string(e.modes.verdict)) +
+           ", \"reason\": " + quoted(e.modes.reason) + ", \"potential_minimum\": " +
+           (e.potential_minimum ? (*e.potential_minimum ? "true" : "false") : "null") + "}";
+  }
+  return out + "\n  ]\n}\n";
+}
+
 }  // namespace unidyn::cli

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "unidyn/analysis/equilibria.hpp"
 #include "unidyn/analysis/linearization.hpp"
 #include "unidyn/analysis/modes.hpp"
 
@@ -23,5 +24,11 @@ std::string modes_text(const Linearization& linearization, const ModeAnalysis& m
 // [re, im]}}], "stability", "reason".
 std::string analysis_json(const System& system, const OperatingPoint& point,
                           const Linearization& linearization, const ModeAnalysis* modes);
+
+// One line per equilibrium: its coordinates (angles in (−π, π]), its verdict and the reason, and
+// Lagrange–Dirichlet's word where it applies.
+std::string equilibria_text(const System& system, const std::vector<Equilibrium>& found,
+                            std::size_t starts);
+std::string equilibria_json(const System& system, const std::vector<Equilibrium>& found);
 
 }  // namespace unidyn::cli

@@ -59,10 +59,11 @@ int main(int argc, char** argv) {
   }
 
   try {
-    int status = rotation.rotation->parsed() ? unidyn::cli::run_rotation_command(rotation)
-                 : analysis.linearize->parsed() || analysis.modes->parsed()
-                     ? unidyn::cli::run_analysis_commands(analysis)
-                     : unidyn::cli::run_model_commands(models);
+    int status =
+        rotation.rotation->parsed() ? unidyn::cli::run_rotation_command(rotation)
+        : analysis.linearize->parsed() || analysis.modes->parsed() || analysis.equilibria->parsed()
+            ? unidyn::cli::run_analysis_commands(analysis)
+            : unidyn::cli::run_model_commands(models);
     if (status < 0) status = 2;
     // what could not be written to standard output (a full disk, /dev/full) is a failure
     if (std::fflush(stdout) != 0 || std::ferror(stdout)) {

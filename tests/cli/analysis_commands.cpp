@@ -15,7 +15,8 @@ TEST(AnalysisCommands, SameOutputOnEveryRun) {
   for (const std::string& command : std::vector<std::string>{
            "linearize double-pendulum --at theta1=0 theta2=0", "modes bicycle" + kBicycleAt,
            "modes spring-chain --at x1=0 x2=0 --format json",
-           "linearize torque-free-body --at 'der(psi)=5' --format json"}) {
+           "linearize torque-free-body --at 'der(psi)=5' --format json", "equilibria rotating-hoop",
+           "equilibria double-pendulum --format json"}) {
     const Outcome first = run(command);
     ASSERT_EQ(first.status, 0) << command << ": " << first.err;
     const Outcome again = run(command, "UNIDYN_RANDOM_LAYOUT=1");
@@ -24,6 +25,8 @@ TEST(AnalysisCommands, SameOutputOnEveryRun) {
   const Outcome modes = run("modes bicycle" + kBicycleAt);
   EXPECT_TRUE(contains(modes.out, "ignorable, dropped: x, y, psi, thR, thF")) << modes.out;
   EXPECT_TRUE(contains(modes.out, "stability: linearly stable")) << modes.out;
+  const Outcome hoop = run("equilibria rotating-hoop");
+  EXPECT_TRUE(hoop.out.starts_with("4 equilibria of Bead on a rotating hoop")) << hoop.out;
 }
 
 TEST(AnalysisCommands, BadInputRefused) {
@@ -31,7 +34,8 @@ TEST(AnalysisCommands, BadInputRefused) {
        {"modes double-pendulum --at theta1=0.3", "modes double-pendulum --at nope=1",
         "modes double-pendulum --at theta1=0 --set theta2=1",
         "modes double-pendulum --at theta1=0 --sweep g=1:2", "linearize heavy-top --at theta=0",
-        "modes double-pendulum --at theta1=0 --sweep g=1:2:3 --format json"}) {
+        "modes double-pendulum --at theta1=0 --sweep g=1:2:3 --format json",
+        "equilibria double-pendulum --starts 0", "equilibria double-pendulum --at theta1=x"}) {
     const Outcome r = run(command);
     EXPECT_EQ(r.status, 2) << command << ": " << r.err;
     EXPECT_TRUE(contains(r.err, "unidyn: error:")) << command << ": " << r.err;

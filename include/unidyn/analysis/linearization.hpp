@@ -52,7 +52,12 @@ struct Linearization {
   // Coordinates dropped as ignorable, in the order dropped; coordinates and rates eliminated by the
   // constraints.
   std::vector<std::string> ignorable, dependent_coordinates, dependent_rates;
+  // M δq̈ + C δq̇ + K δq in all coordinates before the constraints are used (C = ∂(M q̈ − f − Aᵀλ)/∂q̇,
+  // K likewise along q); the equations themselves when there are no constraints (second_order).
+  SecondOrderForm all_coordinates;
   std::optional<SecondOrderForm> second_order;
+  // Whether velocity constraints hold at the point (their rows are not gradients of a Ψ).
+  bool velocity_constraints = false;
 
   // For mode shapes in every coordinate: the system before the ignorable coordinates were dropped
   // (its states the independent coordinates, then the independent rates), which of its states were

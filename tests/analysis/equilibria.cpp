@@ -1,0 +1,88 @@
+// Equilibria by multi-start Newton (analysis/equilibria.hpp) against closed forms: the bead on the
+// rotating hoop (Ex. 3.7) on both sides of its bifurcation, the double pendulum's four, the spring
+// chain's four.
+#include "unidyn/analysis/equilibria.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "support/model_run.hpp"
+
+namespace unidyn {
+namespace {
+
+std::vector<Equilibrium> equilibria(const std::string& model, const std::vector<std::string>& at,
+                                    const std::vector<std::pair<std::string, double>>& set = {}) {
+  const System system = load_model(test::model_path(model));
+  const CompiledSystem compiled(system, lagrange_equations(system));
+  return find_equilibria(system, compiled, parse_given_values(system, at),
+                         initial_state(system, set).parameters);
+}
+
+// φ'' = (Ω² cos φ + g/R0) sin φ: 0 and π, and ±φ* with cos φ* = −g/(R0 Ω²) when Ω² > g/R0,
+// the only stable ones then (the amended potential's minima); below, π alone is stable.
+TEST(Equilibria, RotatingHoopOnBothSidesOfTheBifurcation) {
+  const double pi = std::numbers::pi, g = 9.81, R0 = 0.5, Omega = 6.264183905346329;
+  const auto fast = equilibria("rotating-hoop", {});
+  ASSERT_EQ(fast.size(), 4u);
+  const double star = std::acos(-g / (R0 * Omega * Omega));
+  const double expected[] = {-star, 0.0, star, pi};
+  const Stability verdicts[] = {Stability::linearly_stable, Stability::unstable,
+                                Stability::linearly_stable, Stability::unstable};
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_NEAR(fast[k].point.q[0], expected[k], 1e-10) << k;
+    EXPECT_EQ(fast[k].modes.verdict, verdicts[k]) << k << ": " << fast[k].modes.reason;
+    ASSERT_TRUE(fast[k].potential_minimum.has_value());
+    EXPECT_EQ(*fast[k].potential_minimum, verdicts[k] == Stability::linearly_stable);
+  }
+  const auto slow = equilibria("rotating-hoop", {}, {{"Omega", 3.0}});
+  ASSERT_EQ(slow.size(), 2u);
+  EXPECT_NEAR(slow[0].point.q[0], 0.0, 1e-10);
+  EXPECT_EQ(slow[0].modes.verdict, Stability::unstable);
+  EXPECT_NEAR(slow[1].point.q[0], pi, 1e-10);
+  EXPECT_TRUE(slow[1].potential_minimum.value_or(false));
+}
+
+// Hanging, upside down, and the two mixed ones; only hanging is a minimum of U.
+TEST(Equilibria, DoublePendulumHasFour) {
+  const double pi = std::numbers::pi;
+  const auto found = equilibria("double-pendulum", {});
+  ASSERT_EQ(found.size(), 4u);
+  int stable = 0;
+  for (const Equilibrium& e : found) {
+    for (const double angle : {e.point.q[0], e.point.q[1]}) {
+      EXPECT_LT(std::min(std::abs(angle), std::abs(std::abs(angle) - pi)), 1e-10) << angle;
+    }
+    if (e.potential_minimum.value_or(false)) {
+      ++stable;
+      EXPECT_LT(std::abs(e.point.q[0]) + std::abs(e.point.q[1]), 1e-10);
+      EXPECT_EQ(e.modes.verdict, Stability::linearly_stable);
+    } else {
+      EXPECT_EQ(e.modes.verdict, Stability::unstable);
+    }
+  }
+  EXPECT_EQ(stable, 1);
+  // a coordinate held: θ1 = 0 leaves θ2 = 0 or π
+  EXPECT_EQ(equilibria("double-pendulum", {"theta1=0"}).size(), 2u);
+}
+
+// The spring chain in its line: each spring at its rest length L = 1 on either side of the point it
+// hangs from (the one from the origin to P1 = (1 + x1, 0, 0) is at rest at x1 = 0 and x1 = −2), so
+// four equilibria, x1 ∈ {0, −2}, x2 − x1 ∈ {0, −2}, all minima of the springs' energy with the same
+// frequencies; the plane constraints hold the weight.
+TEST(Equilibria, SpringChainHasFour) {
+  const auto found = equilibria("spring-chain", {});
+  ASSERT_EQ(found.size(), 4u);
+  const double expected[4][2] = {{-2, -4}, {-2, -2}, {0, -2}, {0, 0}};
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_NEAR(found[k].point.q[0], expected[k][0], 1e-10);
+    EXPECT_NEAR(found[k].point.q[1], expected[k][1], 1e-10);
+    EXPECT_LT(found[k].point.q.tail(4).cwiseAbs().maxCoeff(), 1e-10);  // y1, y2, z1, z2
+    EXPECT_TRUE(found[k].potential_minimum.value_or(false));
+  }
+}
+
+}  // namespace
+}  // namespace unidyn
