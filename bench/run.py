@@ -201,6 +201,59 @@ class Bench:
             self.say(f"| {model} | " + " | ".join(cells) + f" | {worst:.1e} |")
         self.say()
 
+    # 8. Analysis against SymPy's Linearizer ------------------------------------------------------
+    def analysis(self):
+        self.say("## 8. Analysis: linearisation and modes against SymPy's Linearizer\n")
+        self.say("Whole `unidyn` processes (read, derive, compile, complete the operating point, "
+                 "linearise with exact derivatives, eigenvalues), best of 3; SymPy 1.14: "
+                 "`KanesMethod` with the constraints' dependent coordinate and speeds, then "
+                 "`linearize(A_and_B=True)` at the operating point (bench/sympy/linearize.py), one "
+                 "run, derivation and linearisation timed apart. The rolling disk upright at "
+                 "spin 10 rad/s; the benchmark bicycle upright at 4.6 m/s, and a sweep of 1000 "
+                 "speeds with the weave and capsize speeds (SymPy's derivation and linearisation "
+                 "of the bicycle takes minutes and is not run). Goals of issue 14: the disk ≤ 50 "
+                 "ms, the bicycle ≤ 1 s, the sweep ≤ 2 s.\n")
+        self.say("| model | unidyn | SymPy derive | SymPy linearize | ratio | eigenvalues |")
+        self.say("|---|---|---|---|---|---|")
+        cli = os.path.join(self.build, "unidyn")
+        disk = ["modes", "rolling-disk", "--at", "theta=pi/2", "der(phi)=10", "der(psi)=0",
+                "der(theta)=0", "--format", "json"]
+        bicycle_at = ["--at", "der(thR)=v/rR", "der(phi)=0", "der(delta)=0", "der(psi)=0"]
+
+        def best_of_three(arguments):
+            best, out = None, None
+            for _ in range(3):
+                start = time.perf_counter()
+                out = subprocess.run([cli] + arguments, capture_output=True, text=True,
+                                     timeout=300, check=True)
+                elapsed = time.perf_counter() - start
+                best = elapsed if best is None else min(best, elapsed)
+            return best, out
+
+        seconds, out = best_of_three(disk)
+        ours = json.loads(out.stdout)
+        ours_lambda = sorted(abs(m["im"]) for m in ours["modes"] if m["im"] != 0)
+        theirs = run_json([sys.executable, os.path.join(HERE, "sympy", "linearize.py")],
+                          timeout=600)
+        theirs_lambda = sorted(abs(i) for r, i in theirs["eigenvalues"] if i > 0)
+        difference = max((abs(a - b) for a, b in zip(ours_lambda, theirs_lambda)), default=0.0)
+        total = theirs["derive_seconds"] + theirs["linearize_seconds"]
+        self.say(f"| rolling disk | {seconds * 1e3:.0f} ms | {theirs['derive_seconds']:.2f} s "
+                 f"| {theirs['linearize_seconds']:.2f} s | {total / seconds:.0f}× | "
+                 f"±{ours_lambda[0]:.10f}i (SymPy ±{theirs_lambda[0]:.10f}i, difference "
+                 f"{difference:.1e}) |")
+        seconds, out = best_of_three(["modes", "bicycle"] + bicycle_at)
+        stability = out.stdout.strip().splitlines()[-1].split(":")[1].strip()
+        self.say(f"| bicycle at 4.6 m/s | {seconds:.2f} s | not run | not run | | {stability} |")
+        seconds, out = best_of_three(["modes", "bicycle"] + bicycle_at +
+                                     ["--sweep", "v=0:10:1000"])
+        speeds = [line.split("=")[1].split(":")[0].strip()
+                  for line in out.stderr.splitlines() if line.startswith("stability changes")]
+        self.say(f"| bicycle, 1000 speeds | {seconds:.2f} s | not run | not run | | weave and "
+                 f"capsize at {' and '.join(speeds)} m/s (Meijaard et al.: 4.29238253634111 and "
+                 f"6.02426201538837) |")
+        self.say()
+
     # 7. Micro benchmarks -------------------------------------------------------------------------
     def micro(self):
         self.say("## 7. Micro benchmarks (Google Benchmark)\n")
@@ -481,7 +534,7 @@ def main():
     bench.say("Reproduce: `bash bench/run.sh` (builds into build-bench/ and runs "
               "`python3 bench/run.py build-bench`).\n")
     for part in (bench.derivation, bench.right_hand_side, bench.time_to_accuracy, bench.growth,
-                 bench.long_runs, bench.large_systems, bench.micro):
+                 bench.long_runs, bench.large_systems, bench.analysis, bench.micro):
         try:
             part()
         except Exception as error:  # report and go on with the other comparisons
