@@ -156,7 +156,8 @@ int run_analysis_commands(const AnalysisCommands& c) {
   if (!c.sweep.empty() && c.format != "text") {
     throw std::invalid_argument("--sweep writes CSV: drop --format");
   }
-  const CompiledSystem compiled(system, lagrange_equations(system));
+  const EquationsOfMotion equations = lagrange_equations(system);
+  const CompiledSystem compiled(system, equations);
   if (c.equilibria->parsed()) {
     const auto found = find_equilibria(system, compiled, given,
                                        initial_state(system, sets).parameters, {c.starts});
@@ -170,12 +171,15 @@ int run_analysis_commands(const AnalysisCommands& c) {
   const Linearization linearization = linearize(system, compiled, point);
   const bool modes = c.modes->parsed();
   const ModeAnalysis analysis = modes ? analyse_modes(linearization) : ModeAnalysis{};
+  const std::optional<ExactSecondOrder> exact = exact_second_order(system, equations, given);
   if (c.format == "json") {
-    std::cout << analysis_json(system, point, linearization, modes ? &analysis : nullptr);
+    std::cout << analysis_json(system, point, linearization, modes ? &analysis : nullptr,
+                               exact ? &*exact : nullptr);
     return 0;
   }
   std::cout << operating_point_text(system, point, linearization)
             << linearization_text(linearization);
+  if (exact) std::cout << exact_text(system, *exact);
   if (modes) std::cout << modes_text(linearization, analysis);
   return 0;
 }

@@ -12,6 +12,7 @@
 
 #include "unidyn/io/json_text.hpp"
 #include "unidyn/numeric/number_text.hpp"
+#include "unidyn/symbolic/canonical_text.hpp"
 
 namespace unidyn::cli {
 namespace {
@@ -146,6 +147,41 @@ std::string linearization_text(const Linearization& L) {
   return out;
 }
 
+std::string exact_text(const System& system, const ExactSecondOrder& exact) {
+  std::string out = "in closed form (the parameters as symbols), M q'' + C q' + K q = 0 with\n";
+  const auto matrix = [&](const char* name, const ExprMatrix& X) {
+    out += std::string("  ") + name + " = [";
+    for (std::size_t i = 0; i < X.rows; ++i) {
+      out += i ? "; " : "";
+      for (std::size_t j = 0; j < X.cols; ++j) out += (j ? ", " : "") + canonical_text(X(i, j));
+    }
+    out += "]\n";
+  };
+  matrix("M", exact.M);
+  matrix("C", exact.C);
+  matrix("K", exact.K);
+  out += "  (coordinates in order: ";
+  for (std::size_t i = 0; i < system.coordinates().size(); ++i) {
+    out += (i ? ", " : "") + system.coordinates()[i].name;
+  }
+  return out + ")\n";
+}
+
+std::string exact_json(const ExactSecondOrder& exact) {
+  const auto matrix = [](const ExprMatrix& X) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < X.rows; ++i) {
+      out += i ? ", [" : "[";
+      for (std::size_t j = 0; j < X.cols; ++j)
+        out += (j ? ", " : "") + quoted(canonical_text(X(i, j)));
+      out += "]";
+    }
+    return out + "]";
+  };
+  return "{\"M\": " + matrix(exact.M) + ", \"C\": " + matrix(exact.C) +
+         ", \"K\": " + matrix(exact.K) + "}";
+}
+
 std::string modes_text(const Linearization& L, const ModeAnalysis& modes) {
   std::string out = fmt::format(
       "modes (eigenvalues of A; complex ones in pairs, lambda and its conjugate; real parts "
@@ -176,7 +212,7 @@ std::string modes_text(const Linearization& L, const ModeAnalysis& modes) {
 }
 
 std::string analysis_json(const System& system, const OperatingPoint& point, const Linearization& L,
-                          const ModeAnalysis* modes) {
+                          const ModeAnalysis* modes, const ExactSecondOrder* exact) {
   const auto& q = system.coordinates();
   std::string out = "{\n  \"model\": " + quoted(system.name) + ",\n  \"operating_point\": {";
   const auto values = [&](const Eigen::VectorXd& v, const std::string& prefix,
@@ -202,6 +238,7 @@ std::string analysis_json(const System& system, const OperatingPoint& point, con
            ",\n  \"C\": " + json_matrix(L.second_order->C) +
            ",\n  \"K\": " + json_matrix(L.second_order->K);
   }
+  if (exact) out += ",\n  \"exact\": " + exact_json(*exact);
   if (modes) {
     out += ",\n  \"modes\": [";
     for (std::size_t k = 0; k < modes->modes.size(); ++k) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "unidyn/analysis/equilibria.hpp"
+#include "unidyn/analysis/exact_linearization.hpp"
 #include "unidyn/analysis/linearization.hpp"
 #include "unidyn/analysis/modes.hpp"
 
@@ -15,15 +16,20 @@ std::string operating_point_text(const System& system, const OperatingPoint& poi
                                  const Linearization& linearization);
 // The state, A, and (without constraints) M, C and K.
 std::string linearization_text(const Linearization& linearization);
+// M, C and K in closed form.
+std::string exact_text(const System& system, const ExactSecondOrder& exact);
+std::string exact_json(const ExactSecondOrder& exact);
 // The eigenvalues with their frequencies, damping ratios and shapes, then the verdict.
 std::string modes_text(const Linearization& linearization, const ModeAnalysis& modes);
 
 // One JSON object: "model", "operating_point" {coordinates, rates, accelerations}, "computed",
 // "state", "A", "ignorable", "dependent_coordinates", "dependent_rates", "M", "C", "K" (without
-// constraints), and with modes "modes" [{re, im, natural_frequency, damping_ratio, shape {name:
-// [re, im]}}], "stability", "reason".
+// constraints), "exact" {M, C, K as texts} (at an exact point without constraints), and with modes
+// "modes" [{re, im, natural_frequency, damping_ratio, shape {name: [re, im]}}], "stability",
+// "reason".
 std::string analysis_json(const System& system, const OperatingPoint& point,
-                          const Linearization& linearization, const ModeAnalysis* modes);
+                          const Linearization& linearization, const ModeAnalysis* modes,
+                          const ExactSecondOrder* exact);
 
 // One line per equilibrium: its coordinates (angles in (−π, π]), its verdict and the reason, and
 // Lagrange–Dirichlet's word where it applies.

@@ -1,0 +1,58 @@
+// M, C and K in closed form at an exact operating point.
+#include "unidyn/analysis/exact_linearization.hpp"
+
+#include "unidyn/symbolic/printing.hpp"
+
+namespace unidyn {
+namespace {
+
+// Whether e holds a floating-point number (a decimal typed on the command line).
+bool has_float(const Expr& e) {
+  if (GiNaC::is_a<GiNaC::numeric>(e)) return !e.info(GiNaC::info_flags::crational);
+  for (std::size_t k = 0; k < e.nops(); ++k) {
+    if (has_float(e.op(k))) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::optional<ExactSecondOrder> exact_second_order(const System& system,
+                                                   const EquationsOfMotion& equations,
+                                                   const std::vector<GivenValue>& given) {
+  if (!system.constraints.empty()) return std::nullopt;
+  // the point: the values given, every other coordinate and rate 0
+  GiNaC::exmap point;
+  for (const auto& q : system.coordinates()) {
+    point[q.value] = 0;
+    point[q.rate] = 0;
+  }
+  for (const GivenValue& g : given) {
+    if (has_float(g.value)) return std::nullopt;
+    const bool rate = g.name.starts_with("der(");
+    const auto i = *system.find_coordinate(rate ? g.name.substr(4, g.name.size() - 5) : g.name);
+    point[rate ? system.coordinates()[i].rate : system.coordinates()[i].value] = g.value;
+  }
+  const auto& q = system.coordinates();
+  const std::size_t n = q.size();
+  ExactSecondOrder out{ExprMatrix(n, n), ExprMatrix(n, n), ExprMatrix(n, n)};
+  std::vector<Expr> entries;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) {
+      entries.push_back(equations.mass_matrix(i, j).subs(point));
+      entries.push_back(-equations.forcing[i].diff(q[j].rate).subs(point));
+      entries.push_back(-equations.forcing[i].diff(q[j].value).subs(point));
+    }
+  }
+  const std::vector<Expr> simplified = simplify_all(entries);
+  for (std::size_t i = 0, k = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j, k += 3) {
+      out.M(i, j) = simplified[k];
+      out.C(i, j) = simplified[k + 1];
+      out.K(i, j) = simplified[k + 2];
+    }
+  }
+  return out;
+}
+
+}  // namespace unidyn
