@@ -130,10 +130,10 @@ bool is_angle(const Balance& balance, VectorXd q, Index k) {
 
 }  // namespace
 
-std::vector<Equilibrium> find_equilibria(const System& system, const CompiledSystem& compiled,
-                                         const std::vector<GivenValue>& given,
-                                         const std::vector<double>& parameters,
-                                         const EquilibriumSearch& search) {
+EquilibriumSearchResult find_equilibria(const System& system, const CompiledSystem& compiled,
+                                        const std::vector<GivenValue>& given,
+                                        const std::vector<double>& parameters,
+                                        const EquilibriumSearch& search) {
   const auto n = static_cast<Index>(compiled.coordinate_count());
   // The values given (rates 0 when not) at the parameters' values.
   GiNaC::exmap values;
@@ -169,7 +169,9 @@ std::vector<Equilibrium> find_equilibria(const System& system, const CompiledSys
   }
   std::mt19937 random(search.seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::vector<Equilibrium> found;
+  EquilibriumSearchResult result;
+  std::vector<Equilibrium>& found = result.equilibria;
+
   for (std::size_t start = 0; start < search.starts; ++start) {
     VectorXd q = initial;
     for (const Index i : balance.free) {
@@ -195,8 +197,12 @@ std::vector<Equilibrium> find_equilibria(const System& system, const CompiledSys
     try {
       e.point = operating_point(system, compiled, at, parameters);
       e.linearization = linearize(system, compiled, e.point);
+    } catch (const NotAnOperatingPoint&) {
+      ++result.not_steady;
+      continue;
     } catch (const std::exception&) {
-      continue;  // not a steady motion after all (or singular there)
+      ++result.singular;  // gimbal lock, singular equations
+      continue;
     }
     // the same as one found already? angles modulo 2π, ignorable coordinates aside
     const auto same = [&](const Equilibrium& other) {
@@ -235,7 +241,7 @@ std::vector<Equilibrium> find_equilibria(const System& system, const CompiledSys
     }
     return false;
   });
-  return found;
+  return result;
 }
 
 }  // namespace unidyn

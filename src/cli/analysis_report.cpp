@@ -260,8 +260,9 @@ std::string analysis_json(const System& system, const OperatingPoint& point, con
   return out + "\n}\n";
 }
 
-std::string equilibria_text(const System& system, const std::vector<Equilibrium>& found,
+std::string equilibria_text(const System& system, const EquilibriumSearchResult& result,
                             std::size_t starts) {
+  const std::vector<Equilibrium>& found = result.equilibria;
   std::string out = fmt::format("{} equilibri{} of {} ({} starts; angles in (-pi, pi]):\n",
                                 found.size(), found.size() == 1 ? "um" : "a", system.name, starts);
   const auto& q = system.coordinates();
@@ -272,8 +273,9 @@ std::string equilibria_text(const System& system, const std::vector<Equilibrium>
       const auto& ignorable = e.linearization.ignorable;
       const bool dropped =
           std::find(ignorable.begin(), ignorable.end(), q[i].name) != ignorable.end();
-      values.push_back(q[i].name + " = " + number(e.point.q[static_cast<Eigen::Index>(i)]) +
-                       (dropped ? " (ignorable)" : ""));
+      values.push_back(q[i].name + " = " +
+                       (dropped ? std::string("any (ignorable)")
+                                : number(e.point.q[static_cast<Eigen::Index>(i)])));
     }
     out += fmt::format("  {}. {}\n     {}: {}\n", k + 1, joined(values), to_string(e.modes.verdict),
                        e.modes.reason);
@@ -285,10 +287,24 @@ std::string equilibria_text(const System& system, const std::vector<Equilibrium>
                    "potential there\n";
     }
   }
+  if (result.singular > 0) {
+    out += fmt::format(
+        "left out: {} start{} converged where the equations are singular (Euler angles at gimbal "
+        "lock: describe the rotation by another set, or by Euler parameters, to see what is "
+        "there)\n",
+        result.singular, result.singular == 1 ? "" : "s");
+  }
+  if (result.not_steady > 0) {
+    out += fmt::format(
+        "left out: {} solution{} of the balance that move (a rate of a coordinate "
+        "that is not ignorable)\n",
+        result.not_steady, result.not_steady == 1 ? "" : "s");
+  }
   return out;
 }
 
-std::string equilibria_json(const System& system, const std::vector<Equilibrium>& found) {
+std::string equilibria_json(const System& system, const EquilibriumSearchResult& result) {
+  const std::vector<Equilibrium>& found = result.equilibria;
   const auto& q = system.coordinates();
   std::string out = "{\n  \"model\": " + quoted(system.name) + ",\n  \"equilibria\": [";
   for (std::size_t k = 0; k < found.size(); ++k) {
@@ -303,7 +319,8 @@ std::string equilibria_json(const System& system, const std::vector<Equilibrium>
            ", \"reason\": " + quoted(e.modes.reason) + ", \"potential_minimum\": " +
            (e.potential_minimum ? (*e.potential_minimum ? "true" : "false") : "null") + "}";
   }
-  return out + "\n  ]\n}\n";
+  return out + fmt::format("\n  ],\n  \"starts_singular\": {},\n  \"starts_moving\": {}\n}}\n",
+                           result.singular, result.not_steady);
 }
 
 }  // namespace unidyn::cli

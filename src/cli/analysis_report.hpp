@@ -31,10 +31,10 @@ std::string analysis_json(const System& system, const OperatingPoint& point,
                           const Linearization& linearization, const ModeAnalysis* modes,
                           const ExactSecondOrder* exact);
 
-// One line per equilibrium: its coordinates (angles in (−π, π]), its verdict and the reason, and
-// Lagrange–Dirichlet's word where it applies.
-std::string equilibria_text(const System& system, const std::vector<Equilibrium>& found,
+// One line per equilibrium: its coordinates (angles in (−π, π]; an ignorable one "any"), its
+// verdict and the reason, and Lagrange–Dirichlet's word where it applies; then what was left out.
+std::string equilibria_text(const System& system, const EquilibriumSearchResult& found,
                             std::size_t starts);
-std::string equilibria_json(const System& system, const std::vector<Equilibrium>& found);
+std::string equilibria_json(const System& system, const EquilibriumSearchResult& found);
 
 }  // namespace unidyn::cli

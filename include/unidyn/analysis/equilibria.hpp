@@ -39,10 +39,18 @@ struct Equilibrium {
   std::optional<bool> potential_minimum;
 };
 
-// The distinct equilibria, in the order of their coordinates (angles in (−π, π]).
-std::vector<Equilibrium> find_equilibria(const System& system, const CompiledSystem& compiled,
-                                         const std::vector<GivenValue>& given,
-                                         const std::vector<double>& parameters,
-                                         const EquilibriumSearch& search = {});
+struct EquilibriumSearchResult {
+  // The distinct equilibria, in the order of their coordinates (angles in (−π, π]).
+  std::vector<Equilibrium> equilibria;
+  // The starts whose solution was left out: where the equations are singular (Euler angles at
+  // gimbal lock: the equilibrium may exist, but not in these coordinates), and where the motion
+  // is not steady.
+  std::size_t singular = 0, not_steady = 0;
+};
+
+EquilibriumSearchResult find_equilibria(const System& system, const CompiledSystem& compiled,
+                                        const std::vector<GivenValue>& given,
+                                        const std::vector<double>& parameters,
+                                        const EquilibriumSearch& search = {});
 
 }  // namespace unidyn
