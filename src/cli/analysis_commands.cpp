@@ -116,8 +116,8 @@ void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
                      "from the constraints")
         ->required();
     command->add_option("--set", c.sets, "NAME=NUMBER: a parameter");
-    command->add_option("--format", c.format, "text | json")
-        ->check(CLI::IsMember({"text", "json"}))
+    command->add_option("--format", c.format, "text | latex | json")
+        ->check(CLI::IsMember({"text", "latex", "json"}))
         ->capture_default_str();
   };
   c.linearize = app.add_subcommand(
@@ -172,9 +172,9 @@ int run_analysis_commands(const AnalysisCommands& c) {
   const bool modes = c.modes->parsed();
   const ModeAnalysis analysis = modes ? analyse_modes(linearization) : ModeAnalysis{};
   const std::optional<ExactSecondOrder> exact = exact_second_order(system, equations, given);
-  if (c.format == "json") {
-    std::cout << analysis_json(system, point, linearization, modes ? &analysis : nullptr,
-                               exact ? &*exact : nullptr);
+  if (c.format == "json" || c.format == "latex") {
+    std::cout << (c.format == "json" ? analysis_json : analysis_latex)(
+        system, point, linearization, modes ? &analysis : nullptr, exact ? &*exact : nullptr);
     return 0;
   }
   std::cout << operating_point_text(system, point, linearization)

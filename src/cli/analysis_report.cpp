@@ -13,6 +13,7 @@
 #include "unidyn/io/json_text.hpp"
 #include "unidyn/numeric/number_text.hpp"
 #include "unidyn/symbolic/canonical_text.hpp"
+#include "unidyn/symbolic/coordinates.hpp"
 
 namespace unidyn::cli {
 namespace {
@@ -111,7 +112,73 @@ std::string json_names(const std::vector<std::string>& names) {
   return out + "]";
 }
 
+// A number in LaTeX: twelve significant digits, 1.5e-07 as 1.5 \times 10^{-7}.
+std::string latex_number(double x) {
+  const std::string text = number(x);
+  const std::size_t e = text.find('e');
+  if (e == std::string::npos) return text;
+  const int exponent = std::stoi(text.substr(e + 1));
+  return text.substr(0, e) + " \\times 10^{" + std::to_string(exponent) + "}";
+}
+
+// A state name in LaTeX: phi → \phi, der(phi) → \dot{\phi}.
+std::string latex_state(const std::string& name) {
+  if (name.starts_with("der(")) return "\\dot{" + latex_name(name.substr(4, name.size() - 5)) + "}";
+  return latex_name(name);
+}
+
+// A bmatrix of entries already in LaTeX.
+std::string bmatrix(const std::vector<std::vector<std::string>>& rows) {
+  std::string out = "\\begin{bmatrix}";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    out += i ? " \\\\ " : " ";
+    for (std::size_t j = 0; j < rows[i].size(); ++j) out += (j ? " & " : "") + rows[i][j];
+  }
+  return out + " \\end{bmatrix}";
+}
+
 }  // namespace
+
+std::string analysis_latex(const System& system, const OperatingPoint& point,
+                           const Linearization& L, const ModeAnalysis* modes,
+                           const ExactSecondOrder* exact) {
+  std::string out = "% " + system.name + ": linearised about";
+  for (const std::string& v : given_values(system, point)) out += " " + v + ";";
+  if (!L.ignorable.empty()) out += " ignorable, dropped: " + joined(L.ignorable);
+  out += "\n\\begin{align}\n";
+  std::vector<std::vector<std::string>> state, A;
+  for (const std::string& s : L.state) state.push_back({latex_state(s)});
+  for (Eigen::Index i = 0; i < L.A.rows(); ++i) {
+    A.emplace_back();
+    for (Eigen::Index j = 0; j < L.A.cols(); ++j) A.back().push_back(latex_number(L.A(i, j)));
+  }
+  out += "  \\dot{x} &= A x, \\quad x = " + bmatrix(state) + " \\label{eq:linearised} \\\\\n";
+  out += "  A &= " + bmatrix(A) + " \\label{eq:state-matrix}";
+  if (exact) {
+    const auto latex = [](const ExprMatrix& X) {
+      std::vector<std::vector<std::string>> rows(X.rows);
+      for (std::size_t i = 0; i < X.rows; ++i) {
+        for (std::size_t j = 0; j < X.cols; ++j) rows[i].push_back(canonical_latex(X(i, j)));
+      }
+      return bmatrix(rows);
+    };
+    out += " \\\\\n  M &= " + latex(exact->M) + ", \\quad C = " + latex(exact->C) +
+           ", \\quad K = " + latex(exact->K) + " \\label{eq:mck}";
+  }
+  out += "\n\\end{align}\n";
+  if (modes) {
+    for (const Mode& m : modes->modes) {
+      const double re =
+          std::abs(m.eigenvalue.real()) <= modes->tolerance ? 0.0 : m.eigenvalue.real();
+      out += "% lambda = " +
+             (m.damped_frequency == 0.0 ? number(re)
+                                        : number(re) + " +/- " + number(m.damped_frequency) + "i") +
+             "\n";
+    }
+    out += "% stability: " + to_string(modes->verdict) + ": " + modes->reason + "\n";
+  }
+  return out;
+}
 
 std::string operating_point_text(const System& system, const OperatingPoint& point,
                                  const Linearization& linearization) {

@@ -22,6 +22,12 @@ std::string exact_json(const ExactSecondOrder& exact);
 // The eigenvalues with their frequencies, damping ratios and shapes, then the verdict.
 std::string modes_text(const Linearization& linearization, const ModeAnalysis& modes);
 
+// An align environment (amsmath): the state, A, M, C and K in closed form where there are, the
+// eigenvalues and the verdict (as comments); names set as the book sets them (\dot{\phi}).
+std::string analysis_latex(const System& system, const OperatingPoint& point,
+                           const Linearization& linearization, const ModeAnalysis* modes,
+                           const ExactSecondOrder* exact);
+
 // One JSON object: "model", "operating_point" {coordinates, rates, accelerations}, "computed",
 // "state", "A", "ignorable", "dependent_coordinates", "dependent_rates", "M", "C", "K" (without
 // constraints), "exact" {M, C, K as texts} (at an exact point without constraints), and with modes

@@ -42,6 +42,31 @@ TEST(LatexDocuments, PdflatexCompilesEveryForm) {
   std::filesystem::remove_all(directory);
 }
 
+// `linearize` and `modes --format latex` (with M, C, K in closed form where there are) set in a
+// document compile too.
+TEST(LatexDocuments, PdflatexCompilesTheLinearisations) {
+  if (!have_pdflatex()) GTEST_SKIP() << "pdflatex is not installed (texlive-latex-base)";
+  const std::string directory = temp_path("latex-analysis");
+  std::filesystem::create_directories(directory);
+  for (const char* command :
+       {"linearize sleeping-top --at 'der(gamma)=spin'", "modes double-pendulum --at theta1=0",
+        "modes bicycle --at 'der(thR)=v/rR' 'der(phi)=0' 'der(delta)=0' 'der(psi)=0'",
+        "linearize rotating-hoop --at 'phi=acos(-g/(R0*Omega^2))'"}) {
+    const Outcome r = run(std::string(command) + " --format latex");
+    ASSERT_EQ(r.status, 0) << command << ": " << r.err;
+    write_file(directory + "/linearised.tex",
+               "\\documentclass{article}\n\\usepackage{amsmath}\n\\begin{document}\n" + r.out +
+                   "\\end{document}\n");
+    const std::string compile = "cd '" + directory +
+                                "' && pdflatex -interaction=nonstopmode -halt-on-error "
+                                "linearised.tex >compile.log 2>&1";
+    EXPECT_EQ(std::system(compile.c_str()), 0)
+        << command << ":\n"
+        << read_file(directory + "/compile.log").substr(0, 3000);
+  }
+  std::filesystem::remove_all(directory);
+}
+
 // --standalone is for LaTeX only.
 TEST(LatexDocuments, StandaloneNeedsLatex) {
   const Outcome r = run("derive double-pendulum --standalone");
