@@ -169,20 +169,53 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
   }
   std::mt19937 random(search.seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  // the coordinates of each body's Euler parameters (their unit-norm constraint)
+  std::vector<std::vector<Index>> quaternions;
+  for (const Constraint& c : system.constraints) {
+    if (!c.parametrisation) continue;
+    quaternions.emplace_back();
+    for (Index i = 0; i < n; ++i) {
+      if (c.expression.has(system.coordinates()[static_cast<std::size_t>(i)].value)) {
+        quaternions.back().push_back(i);
+      }
+    }
+  }
   EquilibriumSearchResult result;
   std::vector<Equilibrium>& found = result.equilibria;
-
   for (std::size_t start = 0; start < search.starts; ++start) {
     VectorXd q = initial;
     for (const Index i : balance.free) {
       q[i] = angle[static_cast<std::size_t>(i)] ? std::numbers::pi * unit(random)
                                                 : initial[i] + spread[i] * unit(random);
     }
+    // Euler parameters: a rotation drawn uniformly (a normal 4-vector, normalised), where free
+    for (const std::vector<Index>& group : quaternions) {
+      double norm = 0.0;
+      for (const Index i : group) {
+        q[i] = normal(random);
+        norm += q[i] * q[i];
+      }
+      for (const Index i : group) {
+        if (!template_point.q_given[static_cast<std::size_t>(i)])
+          q[i] /= std::sqrt(norm);
+        else
+          q[i] = template_point.q[i];
+      }
+    }
     const auto solution = solve_from(balance, q);
     if (!solution) continue;
     VectorXd x = solution->first;
     for (const Index i : balance.free) {
       if (angle[static_cast<std::size_t>(i)]) x[i] = wrapped(x[i]);
+    }
+    // Euler parameters e and −e are one rotation: the first that is not 0 made positive
+    for (const std::vector<Index>& group : quaternions) {
+      const auto first =
+          std::find_if(group.begin(), group.end(), [&](Index i) { return std::abs(x[i]) > 1e-6; });
+      if (first != group.end() && x[*first] < 0) {
+        for (const Index i : group) x[i] = -x[i];
+      }
     }
     // linearised there: every coordinate given, the rates as given
     std::vector<GivenValue> at;

@@ -207,10 +207,15 @@ std::optional<EulerChart> ModelReader::euler_chart(const YAML::Node& node, const
   return chart;
 }
 
-// {quaternion: [e0, e1, e2, e3]} of four coordinates: unidyn keeps e0² + e · e = 1 itself, as a
-// position constraint named <body>_unit (its multiplier does no work).
+// {quaternion: [e0, e1, e2, e3]} of four coordinates, alone or a factor of a product: unidyn keeps
+// e0² + e · e = 1 itself, as a position constraint named <body>_unit (<body>_unit2, ... for more
+// quaternions in one product; its multiplier does no work).
 void ModelReader::add_unit_norm_constraint(const YAML::Node& node, const std::string& body,
                                            System& system) {
+  if (node.IsSequence()) {
+    for (const auto& factor : node) add_unit_norm_constraint(factor, body, system);
+    return;
+  }
   if (!node.IsMap() || !node["quaternion"]) return;
   Expr norm_squared = 0;
   for (std::size_t i = 0; i < 4; ++i) {
@@ -218,7 +223,12 @@ void ModelReader::add_unit_norm_constraint(const YAML::Node& node, const std::st
     if (!q) return;  // the parameters are expressions: their norm is the model's business
     norm_squared += GiNaC::pow(system.coordinates()[*q].value, 2);
   }
-  const std::string name = body + "_unit";
+  std::string name = body + "_unit";
+  for (int k = 2; std::any_of(system.constraints.begin(), system.constraints.end(),
+                              [&](const Constraint& c) { return c.name == name; });
+       ++k) {
+    name = body + "_unit" + std::to_string(k);
+  }
   system.constraints.push_back(
       {name,
        Constraint::Kind::position,

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <numbers>
 
@@ -102,6 +103,46 @@ TEST(Equilibria, SteadyRotationsOfATorqueFreeBody) {
   }
   EXPECT_EQ(stable, 4);  // about the major axis, e3
   EXPECT_GT(result.singular, 0u);
+}
+
+// Ex. 9.9(e), Lagrange's 24 relative equilibria of a satellite on a circular orbit (its attitude
+// relative to the orbiting frame by Euler parameters, e and −e one rotation): each with its
+// principal axes along the radial, along-track and normal directions — the rotation a signed
+// permutation, all 24 different — and stable exactly where the least-inertia axis e1 is radial and
+// the most-inertia axis e3 normal to the orbit (4 of them, Lagrange–Dirichlet); the others
+// unstable.
+TEST(Equilibria, SatellitesTwentyFourRelativeEquilibria) {
+  const auto found = equilibria("satellite-relative-equilibria", {});
+  ASSERT_EQ(found.size(), 24u);
+  std::vector<Eigen::Matrix3d> rotations;
+  int stable = 0;
+  for (const Equilibrium& e : found) {
+    const double e0 = e.point.q[0];
+    const Eigen::Vector3d v(e.point.q[1], e.point.q[2], e.point.q[3]);
+    Eigen::Matrix3d skew;
+    skew << 0, -v[2], v[1], v[2], 0, -v[0], -v[1], v[0], 0;
+    // (6.47) the rotation of Euler parameters
+    const Eigen::Matrix3d R =
+        (e0 * e0 - v.dot(v)) * Eigen::Matrix3d::Identity() + 2 * v * v.transpose() + 2 * e0 * skew;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        EXPECT_LT(std::min(std::abs(R(i, j)), std::abs(std::abs(R(i, j)) - 1)), 1e-8) << R;
+      }
+    }
+    for (const Eigen::Matrix3d& other : rotations) EXPECT_GT((R - other).norm(), 1e-3);
+    rotations.push_back(R);
+    const bool lagrange =
+        std::abs(std::abs(R(0, 0)) - 1) < 1e-8 && std::abs(std::abs(R(2, 2)) - 1) < 1e-8;
+    if (e.modes.verdict == Stability::linearly_stable) {
+      ++stable;
+      EXPECT_TRUE(lagrange) << R;
+      EXPECT_TRUE(e.potential_minimum.value_or(false));
+    } else {
+      EXPECT_EQ(e.modes.verdict, Stability::unstable);
+      EXPECT_FALSE(lagrange) << R;
+    }
+  }
+  EXPECT_EQ(stable, 4);
 }
 
 }  // namespace

@@ -308,6 +308,37 @@ TEST(ModelFile, Constraints) {
 }
 
 // initial: values and rates are expressions of the parameters; what is not given is 0.
+// Euler parameters get their unit-norm constraint also as a factor of a product of rotations
+// (a satellite's attitude in its orbiting frame): without it M is singular along e.
+TEST(ModelFile, QuaternionInAProductGetsItsUnitNorm) {
+  const System s = parse_model(
+      yaml({"unidyn: 1", "name: q", "parameters: {w: 1}",
+            "coordinates: [e0, e1, e2, e3, f0, f1, f2, f3]", "bodies:", "  b:", "    mass: 1",
+            "    inertia: [1, 2, 3]",
+            "    rotation: [{axis: [0, 0, 1], angle: w*t}, {quaternion: [e0, e1, e2, e3]},",
+            "               {quaternion: [f0, f1, f2, f3]}]", "    center: [0, 0, 0]"}),
+      "q.yaml");
+  ASSERT_EQ(s.constraints.size(), 2u);
+  EXPECT_EQ(s.constraints[0].name, "b_unit");
+  EXPECT_EQ(s.constraints[1].name, "b_unit2");
+  for (const Constraint& c : s.constraints) {
+    EXPECT_TRUE(c.parametrisation);
+    EXPECT_EQ(c.kind, Constraint::Kind::position);
+  }
+  const State unit{{{"e0", 0.6},
+                    {"e1", 0.8},
+                    {"e2", 0.0},
+                    {"e3", 0.0},
+                    {"f0", 0.0},
+                    {"f1", 0.0},
+                    {"f2", 0.0},
+                    {"f3", 1.0}},
+                   {},
+                   0.0};
+  EXPECT_NEAR(value_at(s, s.constraints[0].expression, unit), 0.0, 1e-15);
+  EXPECT_NEAR(value_at(s, s.constraints[1].expression, unit), 0.0, 1e-15);
+}
+
 TEST(ModelFile, InitialValues) {
   const System s = parse_model(kEverything, "everything.yaml");
   ASSERT_EQ(s.initial_values.size(), 2u);

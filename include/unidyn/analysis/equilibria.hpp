@@ -7,14 +7,16 @@
 // by Gauss–Newton steps (least squares, so a continuum of solutions is no obstacle) with exact
 // derivatives of the compiled equations and a backtracking line search, from `starts` points: each
 // angle (a coordinate the equations are 2π-periodic in) uniform in (−π, π], each other coordinate
-// uniform within 2 (1 + |its initial value|) of its initial value. Each solution is then linearised
+// uniform within 2 (1 + |its initial value|) of its initial value, each body's Euler parameters a
+// rotation drawn uniformly. Each solution is then linearised
 // (analysis/linearization.hpp): one that is not an equilibrium or steady motion there (a rate of a
 // coordinate that is not ignorable) is dropped, and solutions equal up to 1e-6 — angles modulo 2π,
-// ignorable coordinates not compared — are one. Each comes with its modes and verdict, and, at rest
-// with forces from a potential (the linearisation's C = 0 and K symmetric) and no velocity
-// constraints, Lagrange–Dirichlet: the stiffness K restricted to the constraints positive definite
-// means a strict minimum of the potential (the amended one, with its centrifugal part, where a
-// drive turns the system steadily: the bead on the rotating hoop), stable.
+// Euler parameters up to their sign (e and −e are one rotation: the first nonzero one is made
+// positive), ignorable coordinates not compared — are one. Each comes with its modes and verdict,
+// and, at rest with forces from a potential (the linearisation's C = 0 and K symmetric) and no
+// velocity constraints, Lagrange–Dirichlet: the stiffness K restricted to the constraints positive
+// definite means a strict minimum of the potential (the amended one, with its centrifugal part,
+// where a drive turns the system steadily: the bead on the rotating hoop), stable.
 #pragma once
 
 #include <optional>
