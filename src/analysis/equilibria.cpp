@@ -145,9 +145,8 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
   template_point.qdot = VectorXd::Zero(n);
   template_point.q_given.assign(static_cast<std::size_t>(n), false);
   for (const GivenValue& g : given) {
-    const bool rate = g.name.starts_with("der(");
-    const auto i = static_cast<Index>(
-        *system.find_coordinate(rate ? g.name.substr(4, g.name.size() - 5) : g.name));
+    const auto [coordinate, rate] = *state_value(system, g.name);
+    const auto i = static_cast<Index>(coordinate);
     const std::optional<double> v = real_value(g.value, values);
     if (!v) throw std::invalid_argument("--at " + g.name + ": not a real number");
     (rate ? template_point.qdot : template_point.q)[i] = *v;
@@ -224,7 +223,7 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
       at.push_back({name, GiNaC::numeric(x[i])});
     }
     for (const GivenValue& g : given) {
-      if (g.name.starts_with("der(")) at.push_back(g);
+      if (state_value(system, g.name)->rate) at.push_back(g);
     }
     Equilibrium e;
     try {

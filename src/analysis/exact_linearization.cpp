@@ -29,8 +29,7 @@ std::optional<ExactSecondOrder> exact_second_order(const System& system,
   }
   for (const GivenValue& g : given) {
     if (has_float(g.value)) return std::nullopt;
-    const bool rate = g.name.starts_with("der(");
-    const auto i = *system.find_coordinate(rate ? g.name.substr(4, g.name.size() - 5) : g.name);
+    const auto [i, rate] = *state_value(system, g.name);
     point[rate ? system.coordinates()[i].rate : system.coordinates()[i].value] = g.value;
   }
   const auto& q = system.coordinates();

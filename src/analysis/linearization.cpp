@@ -334,19 +334,16 @@ Linearization linearize(const System& system, const CompiledSystem& compiled,
     out.state.push_back(k < s1 ? name : rate_name(name));
   }
   out.A = F(out.kept, out.kept);
-  for (const Index i : dependent_q)
+  // the dependent coordinates and rates, in the coordinates' order
+  std::vector<Index> by_order_q = dependent_q, by_order_u = dependent_u;
+  std::sort(by_order_q.begin(), by_order_q.end());
+  std::sort(by_order_u.begin(), by_order_u.end());
+  for (const Index i : by_order_q) {
     out.dependent_coordinates.push_back(names[static_cast<std::size_t>(i)]);
-  for (const Index i : dependent_u)
+  }
+  for (const Index i : by_order_u) {
     out.dependent_rates.push_back(rate_name(names[static_cast<std::size_t>(i)]));
-  std::sort(out.dependent_coordinates.begin(), out.dependent_coordinates.end(),
-            [&](const std::string& a, const std::string& b) {
-              return *system.find_coordinate(a) < *system.find_coordinate(b);
-            });
-  std::sort(out.dependent_rates.begin(), out.dependent_rates.end(),
-            [&](const std::string& a, const std::string& b) {
-              return *system.find_coordinate(a.substr(4, a.size() - 5)) <
-                     *system.find_coordinate(b.substr(4, b.size() - 5));
-            });
+  }
 
   // The point must stay where it is: kept coordinates at rest, independent rates steady, the
   // equations the same at the next instant.

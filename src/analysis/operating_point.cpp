@@ -13,24 +13,22 @@
 namespace unidyn {
 namespace {
 
-// The coordinate a name gives a value or a rate of, and whether it is the rate.
-std::optional<std::pair<std::size_t, bool>> named_value(const System& system,
-                                                        const std::string& name) {
-  if (const auto q = system.find_coordinate(name)) return std::pair{*q, false};
-  if (name.starts_with("der(") && name.ends_with(")")) {
-    if (const auto q = system.find_coordinate(name.substr(4, name.size() - 5))) {
-      return std::pair{*q, true};
-    }
-  }
-  return std::nullopt;
-}
-
 // A unilateral constraint is apart where Ψ exceeds round-off of the coordinates' size.
 bool apart(double psi, const Eigen::VectorXd& q) {
   return psi > kInitialStateTolerance * (1.0 + q.cwiseAbs().maxCoeff());
 }
 
 }  // namespace
+
+std::optional<StateValue> state_value(const System& system, const std::string& name) {
+  if (const auto q = system.find_coordinate(name)) return StateValue{*q, false};
+  if (name.starts_with("der(") && name.ends_with(")")) {
+    if (const auto q = system.find_coordinate(name.substr(4, name.size() - 5))) {
+      return StateValue{*q, true};
+    }
+  }
+  return std::nullopt;
+}
 
 std::vector<GivenValue> parse_given_values(const System& system,
                                            const std::vector<std::string>& texts) {
@@ -40,7 +38,7 @@ std::vector<GivenValue> parse_given_values(const System& system,
   for (const std::string& text : texts) {
     const std::size_t eq = text.find('=');
     const std::string name = text.substr(0, eq);
-    if (eq == std::string::npos || !named_value(system, name)) {
+    if (eq == std::string::npos || !state_value(system, name)) {
       throw std::invalid_argument("--at " + text +
                                   ": expected NAME=VALUE, NAME a coordinate or der(coordinate)");
     }
@@ -90,7 +88,7 @@ OperatingPoint operating_point(const System& system, const CompiledSystem& compi
   start.q_given.assign(n, false);
   start.qdot_given.assign(n, false);
   for (const GivenValue& g : given) {
-    const auto [i, rate] = *named_value(system, g.name);
+    const auto [i, rate] = *state_value(system, g.name);
     const std::optional<double> v = real_value(g.value, values);
     if (!v) {
       throw std::invalid_argument("--at " + g.name + "=" + to_text(g.value) +

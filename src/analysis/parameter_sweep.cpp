@@ -79,9 +79,7 @@ ParameterSweep sweep_modes(const System& system, const CompiledSystem& compiled,
                            const std::vector<GivenValue>& given,
                            const std::vector<std::pair<std::string, double>>& parameters,
                            const std::string& name, double from, double to, std::size_t count) {
-  const bool coordinate =
-      system.find_coordinate(name) || (name.starts_with("der(") && name.ends_with(")") &&
-                                       system.find_coordinate(name.substr(4, name.size() - 5)));
+  const bool coordinate = state_value(system, name).has_value();
   if (!system.find_parameter(name) && !coordinate) {
     throw std::invalid_argument("--sweep " + name +
                                 ": not a parameter, coordinate or der(coordinate) of the model");

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,6 +37,14 @@ struct OperatingPoint {
   // Unilateral constraints apart at the point (Ψ > 0): they exert nothing and are left out.
   std::vector<bool> active;
 };
+
+// A value of the state a name stands for: coordinate q ("q") or its rate ("der(q)").
+struct StateValue {
+  std::size_t coordinate;
+  bool rate;
+};
+// The coordinate or rate `name` is, if it is one.
+std::optional<StateValue> state_value(const System& system, const std::string& name);
 
 // NAME=VALUE texts (command line) as given values, VALUE parsed in the model's names. Throws
 // std::invalid_argument naming the text: no '=', NAME neither a coordinate nor der(coordinate),
