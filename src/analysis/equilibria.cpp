@@ -80,18 +80,41 @@ double scaled_norm(const VectorXd& r, double scale) {
   return r.cwiseAbs().maxCoeff() / scale;
 }
 
-// Gauss–Newton from q (free coordinates moved) and λ = 0; the solution, if it converges.
-std::optional<std::pair<VectorXd, VectorXd>> solve_from(const Balance& balance, VectorXd q) {
+// Gauss–Newton from q (free coordinates moved) and λ = 0; the solution, if it converges: a
+// residual below 1e-10 of `scale` (the forces at the model's own initial state, at least 1) and a
+// Newton step there below 1e-8 of the coordinates. A force that only fades, as gravitation does far
+// away, gives steps that grow instead: no equilibrium at infinity.
+std::optional<std::pair<VectorXd, VectorXd>> solve_from(const Balance& balance, VectorXd q,
+                                                        double scale) {
   const auto m = static_cast<Index>(balance.compiled.constraint_count());
   VectorXd lambda = VectorXd::Zero(m);
   MatrixXd J;
   VectorXd r = balance.residual(q, lambda, &J);
-  const double scale = 1.0 + r.cwiseAbs().maxCoeff();
   for (int iteration = 0; iteration < 100; ++iteration) {
     if (!r.allFinite()) return std::nullopt;
-    if (r.cwiseAbs().maxCoeff() <= 1e-12 * scale) return std::pair{q, lambda};
     const VectorXd step = Eigen::CompleteOrthogonalDecomposition<MatrixXd>(J).solve(-r);
     if (!step.allFinite()) return std::nullopt;
+    const auto free = static_cast<Index>(balance.free.size());
+    if (r.cwiseAbs().maxCoeff() <= 1e-10 * scale &&
+        (free == 0 ||
+         step.head(free).cwiseAbs().maxCoeff() <= 1e-8 * (1.0 + q.cwiseAbs().maxCoeff()))) {
+      // polished to round-off: full steps while they make the residual smaller
+      VectorXd step_here = step;
+      for (int polish = 0; polish < 3; ++polish) {
+        VectorXd q_next = q;
+        for (std::size_t j = 0; j < balance.free.size(); ++j) {
+          q_next[balance.free[j]] += step_here[static_cast<Index>(j)];
+        }
+        const VectorXd lambda_next = lambda + step_here.tail(m);
+        const VectorXd r_next = balance.residual(q_next, lambda_next, &J);
+        if (!r_next.allFinite() || !(r_next.cwiseAbs().maxCoeff() < r.cwiseAbs().maxCoeff())) break;
+        q = q_next;
+        lambda = lambda_next;
+        r = r_next;
+        step_here = Eigen::CompleteOrthogonalDecomposition<MatrixXd>(J).solve(-r);
+      }
+      return std::pair{q, lambda};
+    }
     // backtracking: halve the step until the residual shrinks
     double size = 1.0;
     for (;; size /= 2) {
@@ -113,10 +136,10 @@ std::optional<std::pair<VectorXd, VectorXd>> solve_from(const Balance& balance, 
   return std::nullopt;
 }
 
-// x in (−π, π] (−π and what round-off leaves next to it as π).
+// x in (−π, π] (−π and what the solution's accuracy leaves next to it as π).
 double wrapped(double x) {
   const double w = std::remainder(x, kTwoPi);
-  return w <= -std::numbers::pi + 1e-12 ? w + kTwoPi : w;
+  return w <= -std::numbers::pi + 1e-9 ? w + kTwoPi : w;
 }
 
 // Whether the balance is 2π-periodic in coordinate k (at a point, to round-off): an angle.
@@ -166,6 +189,11 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
     angle[static_cast<std::size_t>(i)] = is_angle(balance, initial, i);
     spread[i] = 2.0 * (1.0 + std::abs(initial[i]));
   }
+  const double at_initial =
+      balance.residual(initial, VectorXd::Zero(static_cast<Index>(system.constraints.size())))
+          .cwiseAbs()
+          .maxCoeff();
+  const double scale = std::max(1.0, at_initial);
   std::mt19937 random(search.seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::normal_distribution<double> normal(0.0, 1.0);
@@ -202,7 +230,7 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
           q[i] = template_point.q[i];
       }
     }
-    const auto solution = solve_from(balance, q);
+    const auto solution = solve_from(balance, q, scale);
     if (!solution) continue;
     VectorXd x = solution->first;
     for (const Index i : balance.free) {
@@ -220,7 +248,7 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
     std::vector<GivenValue> at;
     for (Index i = 0; i < n; ++i) {
       const std::string& name = system.coordinates()[static_cast<std::size_t>(i)].name;
-      at.push_back({name, GiNaC::numeric(x[i])});
+      at.push_back({name, given_number(x[i])});
     }
     for (const GivenValue& g : given) {
       if (state_value(system, g.name)->rate) at.push_back(g);
@@ -250,6 +278,21 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
     };
     if (std::any_of(found.begin(), found.end(), same)) continue;
     e.modes = analyse_modes(e.linearization);
+    // the balance's Jacobian: directions along which it does not change, ignorable ones aside
+    {
+      MatrixXd J;
+      balance.residual(x, solution->second, &J);
+      Eigen::FullPivLU<MatrixXd> lu(J);
+      lu.setThreshold(1e-9);
+      std::size_t ignorable_free = 0;
+      for (const Index i : balance.free) {
+        const std::string& name = system.coordinates()[static_cast<std::size_t>(i)].name;
+        const auto& ignorable = e.linearization.ignorable;
+        ignorable_free += std::find(ignorable.begin(), ignorable.end(), name) != ignorable.end();
+      }
+      const auto nullity = static_cast<std::size_t>(J.cols() - lu.rank());
+      e.continuum = nullity > ignorable_free ? nullity - ignorable_free : 0;
+    }
     // Lagrange–Dirichlet at rest with a symmetric stiffness and no velocity constraints
     const Linearization& L = e.linearization;
     if (e.point.qdot.cwiseAbs().maxCoeff() == 0.0 && !L.velocity_constraints) {

@@ -1,6 +1,8 @@
 // The operating point: the values given, the rest completed from the constraints, q̈ and λ solved.
 #include "unidyn/analysis/operating_point.hpp"
 
+#include <cmath>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -28,6 +30,10 @@ std::optional<StateValue> state_value(const System& system, const std::string& n
     }
   }
   return std::nullopt;
+}
+
+Expr given_number(double x) {
+  return std::abs(x) < std::numeric_limits<double>::min() ? Expr(0) : Expr(GiNaC::numeric(x));
 }
 
 std::vector<GivenValue> parse_given_values(const System& system,

@@ -38,7 +38,7 @@ SweepPoint point_at(const System& system, const CompiledSystem& compiled,
   } else {
     // a value of the operating point: given (in place of what --at said of it)
     std::erase_if(given, [&](const GivenValue& g) { return g.name == name; });
-    given.push_back({name, GiNaC::numeric(value)});
+    given.push_back({name, given_number(value)});
   }
   try {
     const OperatingPoint point =

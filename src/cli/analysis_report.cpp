@@ -344,8 +344,14 @@ std::string equilibria_text(const System& system, const EquilibriumSearchResult&
                        (dropped ? std::string("any (ignorable)")
                                 : number(e.point.q[static_cast<Eigen::Index>(i)])));
     }
-    out += fmt::format("  {}. {}\n     {}: {}\n", k + 1, joined(values), to_string(e.modes.verdict),
-                       e.modes.reason);
+    out += fmt::format("  {}. {}\n", k + 1, joined(values));
+    if (e.continuum > 0) {
+      out += fmt::format(
+          "     one point of a {}-dimensional continuum of equilibria (the forces "
+          "balance all along it)\n",
+          e.continuum);
+    }
+    out += fmt::format("     {}: {}\n", to_string(e.modes.verdict), e.modes.reason);
     if (e.potential_minimum) {
       out += *e.potential_minimum
                  ? "     K is positive definite on the constraints, a strict minimum of the "
@@ -383,7 +389,8 @@ std::string equilibria_json(const System& system, const EquilibriumSearchResult&
     }
     out += "}, \"ignorable\": " + json_names(e.linearization.ignorable) +
            ", \"stability\": " + quoted(to_string(e.modes.verdict)) +
-           ", \"reason\": " + quoted(e.modes.reason) + ", \"potential_minimum\": " +
+           ", \"reason\": " + quoted(e.modes.reason) +
+           ", \"continuum\": " + std::to_string(e.continuum) + ", \"potential_minimum\": " +
            (e.potential_minimum ? (*e.potential_minimum ? "true" : "false") : "null") + "}";
   }
   return out + fmt::format("\n  ],\n  \"starts_singular\": {},\n  \"starts_moving\": {}\n}}\n",

@@ -39,6 +39,9 @@ struct Equilibrium {
   // Lagrange–Dirichlet, where it applies: whether the potential has a strict minimum there (on the
   // constraints, ignorable coordinates aside).
   std::optional<bool> potential_minimum;
+  // The dimension of the continuum of equilibria through it (the forces balance along it: a body
+  // at rest with no forces, anywhere), ignorable coordinates aside; 0 for an isolated one.
+  std::size_t continuum = 0;
 };
 
 struct EquilibriumSearchResult {

@@ -46,6 +46,10 @@ struct StateValue {
 // The coordinate or rate `name` is, if it is one.
 std::optional<StateValue> state_value(const System& system, const std::string& name);
 
+// A double as a given value's expression; a subnormal one (below 2.2e-308, which CLN refuses to
+// convert) as 0.
+Expr given_number(double x);
+
 // NAME=VALUE texts (command line) as given values, VALUE parsed in the model's names. Throws
 // std::invalid_argument naming the text: no '=', NAME neither a coordinate nor der(coordinate),
 // NAME given twice, or a VALUE that is not an expression in the parameters.
