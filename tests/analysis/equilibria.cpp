@@ -105,6 +105,17 @@ TEST(Equilibria, SteadyRotationsOfATorqueFreeBody) {
   EXPECT_GT(result.singular, 0u);
 }
 
+// The knife-edge car at rest, no force on it: every heading is an equilibrium, and each one found
+// says it lies on a 1-dimensional continuum (its position ignorable); the hoop's are isolated. The
+// Kepler problem at rest has none: gravitation only fades far away, and Newton's steps grow there.
+TEST(Equilibria, ContinuaSaidAndInfinityRefused) {
+  const auto car = equilibria("chaplygin-car", {});
+  ASSERT_FALSE(car.empty());
+  for (const Equilibrium& e : car) EXPECT_EQ(e.continuum, 1u);
+  for (const Equilibrium& e : equilibria("rotating-hoop", {})) EXPECT_EQ(e.continuum, 0u);
+  EXPECT_TRUE(equilibria("kepler", {}).empty());
+}
+
 // Ex. 9.9(e), Lagrange's 24 relative equilibria of a satellite on a circular orbit (its attitude
 // relative to the orbiting frame by Euler parameters, e and −e one rotation): each with its
 // principal axes along the radial, along-track and normal directions — the rotation a signed
