@@ -1,13 +1,14 @@
 // Equilibria and steady motions by multi-start Gauss–Newton, deduplicated and classified.
 #include "unidyn/analysis/equilibria.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <stdexcept>
 
+#include "energy_minimum.hpp"
+#include "steady_balance.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {
@@ -19,119 +20,50 @@ using Eigen::VectorXd;
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-// The residual r = [f(q, q̇) + Aᵀλ; Ψ(q)] over the constraints that hold, and its Jacobian in the
-// free coordinates and λ.
-struct Balance {
-  const CompiledSystem& compiled;
-  double t;
-  VectorXd qdot;
-  std::vector<double> parameters;
-  std::vector<Index> free;  // the coordinates solved for
-
-  // r at (q, λ); with J, its Jacobian in (q_free, λ).
-  VectorXd residual(const VectorXd& q, const VectorXd& lambda, MatrixXd* J = nullptr) const {
-    const auto n = static_cast<Index>(compiled.coordinate_count());
-    const auto m = static_cast<Index>(compiled.constraint_count());
-    const Tape& dynamics = compiled.dynamics();
-    const Tape& constraints = compiled.constraint_tape();
-    std::vector<double> inputs{t};
-    inputs.insert(inputs.end(), q.begin(), q.end());
-    inputs.insert(inputs.end(), qdot.begin(), qdot.end());
-    inputs.insert(inputs.end(), parameters.begin(), parameters.end());
-    std::vector<double> seed(inputs.size(), 0.0), dyn(dynamics.output_count()), d_dyn(dyn.size()),
-        con(constraints.output_count()), d_con(con.size());
-    TapeWorkspace workspace;
-    const auto unpack = [&](const std::vector<double>& d, const std::vector<double>& c) {
-      const Eigen::Map<const VectorXd> f(d.data() + n * n, n);
-      const Eigen::Map<const Eigen::Matrix<double, -1, -1, Eigen::RowMajor>> A(d.data() + n * n + n,
-                                                                               m, n);
-      VectorXd r(n + m);
-      r.head(n) = f + A.transpose() * lambda;
-      for (Index k = 0; k < m; ++k) {
-        r[n + k] = compiled.is_position_constraint()[static_cast<std::size_t>(k)]
-                       ? c[static_cast<std::size_t>(m * n + m + k)]
-                       : 0.0;
-      }
-      return std::pair{r, MatrixXd(A)};
-    };
-    dynamics.evaluate_tangent(inputs, seed, dyn, d_dyn, workspace);
-    constraints.evaluate_tangent(inputs, seed, con, d_con, workspace);
-    const auto [r, A] = unpack(dyn, con);
-    if (J) {
-      J->resize(n + m, static_cast<Index>(free.size()) + m);
-      for (std::size_t j = 0; j < free.size(); ++j) {
-        seed[static_cast<std::size_t>(1 + free[j])] = 1.0;
-        dynamics.evaluate_tangent(inputs, seed, dyn, d_dyn, workspace);
-        constraints.evaluate_tangent(inputs, seed, con, d_con, workspace);
-        seed[static_cast<std::size_t>(1 + free[j])] = 0.0;
-        // the derivative of r along q_j: r's formula applied to the tangents, λ fixed
-        VectorXd dr = unpack(d_dyn, d_con).first;
-        J->col(static_cast<Index>(j)) = dr;
-      }
-      J->rightCols(m).setZero();
-      J->topRightCorner(n, m) = A.transpose();
-    }
-    return r;
-  }
-};
-
 // The residual's size relative to the forces at play: f's and Aᵀλ's, and Ψ's own.
 double scaled_norm(const VectorXd& r, double scale) {
   return r.cwiseAbs().maxCoeff() / scale;
 }
 
-// Gauss–Newton from q (free coordinates moved) and λ = 0; the solution, if it converges: a
-// residual below 1e-10 of `scale` (the forces at the model's own initial state, at least 1) and a
-// Newton step there below 1e-8 of the coordinates. A force that only fades, as gravitation does far
+// Gauss–Newton from x (the unknowns, λ = 0); the solution, if it converges: a residual below
+// 1e-10 of `scale` (the forces at the model's own initial state, at least 1) and a Newton step
+// there below 1e-8 of the unknowns other than λ. A force that only fades, as gravitation does far
 // away, gives steps that grow instead: no equilibrium at infinity.
-std::optional<std::pair<VectorXd, VectorXd>> solve_from(const Balance& balance, VectorXd q,
-                                                        double scale) {
-  const auto m = static_cast<Index>(balance.compiled.constraint_count());
-  VectorXd lambda = VectorXd::Zero(m);
+std::optional<VectorXd> solve_from(const SteadyBalance& balance, VectorXd x, double scale) {
+  const Index motion = balance.motion_unknowns();
   MatrixXd J;
-  VectorXd r = balance.residual(q, lambda, &J);
+  VectorXd r = balance.residual(x, &J);
+  const auto largest = [](const VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; };
   for (int iteration = 0; iteration < 100; ++iteration) {
     if (!r.allFinite()) return std::nullopt;
     const VectorXd step = Eigen::CompleteOrthogonalDecomposition<MatrixXd>(J).solve(-r);
     if (!step.allFinite()) return std::nullopt;
-    const auto free = static_cast<Index>(balance.free.size());
-    if (r.cwiseAbs().maxCoeff() <= 1e-10 * scale &&
-        (free == 0 ||
-         step.head(free).cwiseAbs().maxCoeff() <= 1e-8 * (1.0 + q.cwiseAbs().maxCoeff()))) {
+    if (largest(r) <= 1e-10 * scale &&
+        largest(step.head(motion)) <= 1e-8 * (1.0 + largest(x.head(motion)))) {
       // polished to round-off: full steps while they make the residual smaller
       VectorXd step_here = step;
       for (int polish = 0; polish < 3; ++polish) {
-        VectorXd q_next = q;
-        for (std::size_t j = 0; j < balance.free.size(); ++j) {
-          q_next[balance.free[j]] += step_here[static_cast<Index>(j)];
-        }
-        const VectorXd lambda_next = lambda + step_here.tail(m);
-        const VectorXd r_next = balance.residual(q_next, lambda_next, &J);
-        if (!r_next.allFinite() || !(r_next.cwiseAbs().maxCoeff() < r.cwiseAbs().maxCoeff())) break;
-        q = q_next;
-        lambda = lambda_next;
+        const VectorXd x_next = x + step_here;
+        const VectorXd r_next = balance.residual(x_next, &J);
+        if (!r_next.allFinite() || !(largest(r_next) < largest(r))) break;
+        x = x_next;
         r = r_next;
         step_here = Eigen::CompleteOrthogonalDecomposition<MatrixXd>(J).solve(-r);
       }
-      return std::pair{q, lambda};
+      return x;
     }
     // backtracking: halve the step until the residual shrinks
     double size = 1.0;
     for (;; size /= 2) {
       if (size < 1e-6) return std::nullopt;
-      VectorXd q_try = q;
-      for (std::size_t j = 0; j < balance.free.size(); ++j) {
-        q_try[balance.free[j]] += size * step[static_cast<Index>(j)];
-      }
-      const VectorXd lambda_try = lambda + size * step.tail(m);
-      const VectorXd r_try = balance.residual(q_try, lambda_try);
+      const VectorXd x_try = x + size * step;
+      const VectorXd r_try = balance.residual(x_try);
       if (r_try.allFinite() && scaled_norm(r_try, scale) < scaled_norm(r, scale)) {
-        q = q_try;
-        lambda = lambda_try;
+        x = x_try;
         break;
       }
     }
-    r = balance.residual(q, lambda, &J);
+    r = balance.residual(x, &J);
   }
   return std::nullopt;
 }
@@ -142,13 +74,55 @@ double wrapped(double x) {
   return w <= -std::numbers::pi + 1e-9 ? w + kTwoPi : w;
 }
 
-// Whether the balance is 2π-periodic in coordinate k (at a point, to round-off): an angle.
-bool is_angle(const Balance& balance, VectorXd q, Index k) {
-  const VectorXd lambda = VectorXd::Zero(static_cast<Index>(balance.compiled.constraint_count()));
-  const VectorXd r = balance.residual(q, lambda);
-  q[k] += kTwoPi;
-  const VectorXd shifted = balance.residual(q, lambda);
+// Whether the balance is 2π-periodic in coordinate i (at a point, to round-off): an angle.
+bool is_angle(const SteadyBalance& balance, VectorXd q, Index i) {
+  const VectorXd r = balance.residual(balance.unknowns_at(q));
+  q[i] += kTwoPi;
+  const VectorXd shifted = balance.residual(balance.unknowns_at(q));
   return (r - shifted).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + r.cwiseAbs().maxCoeff());
+}
+
+// The momenta p = ∂T/∂q̇ of the cyclic coordinates, as a tape of inputs [t, q, q̇, p].
+Tape momentum_tape(const System& system, const std::vector<Index>& cyclic) {
+  const Expr T = system.kinetic_energy();
+  std::vector<GiNaC::ex> momenta;
+  for (const Index i : cyclic) {
+    momenta.push_back(T.diff(system.coordinates()[static_cast<std::size_t>(i)].rate));
+  }
+  return Tape::compile(momenta, tape_inputs(system, false));
+}
+
+// The tape's inputs at a state.
+std::vector<double> tape_inputs_at(double t, const VectorXd& q, const VectorXd& qdot,
+                                   const std::vector<double>& parameters) {
+  std::vector<double> inputs{t};
+  inputs.insert(inputs.end(), q.begin(), q.end());
+  inputs.insert(inputs.end(), qdot.begin(), qdot.end());
+  inputs.insert(inputs.end(), parameters.begin(), parameters.end());
+  return inputs;
+}
+
+// A tape's outputs and their derivatives along input `input`.
+std::pair<std::vector<double>, std::vector<double>> along(const Tape& tape,
+                                                          const std::vector<double>& inputs,
+                                                          std::size_t input) {
+  std::vector<double> seed(inputs.size(), 0.0), value(tape.output_count()),
+      tangent(tape.output_count());
+  seed[input] = 1.0;
+  TapeWorkspace workspace;
+  tape.evaluate_tangent(inputs, seed, value, tangent, workspace);
+  return {value, tangent};
+}
+
+// ∂p/∂q at a point: one row per output of the momenta's tape.
+MatrixXd momentum_derivative(const Tape& momentum, const OperatingPoint& point) {
+  const std::vector<double> inputs = tape_inputs_at(point.t, point.q, point.qdot, point.parameters);
+  MatrixXd out(static_cast<Index>(momentum.output_count()), point.q.size());
+  for (Index i = 0; i < point.q.size(); ++i) {
+    const auto tangent = along(momentum, inputs, static_cast<std::size_t>(1 + i)).second;
+    out.col(i) = Eigen::Map<const VectorXd>(tangent.data(), out.rows());
+  }
+  return out;
 }
 
 }  // namespace
@@ -158,42 +132,109 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
                                         const std::vector<double>& parameters,
                                         const EquilibriumSearch& search) {
   const auto n = static_cast<Index>(compiled.coordinate_count());
+  const auto m = static_cast<Index>(compiled.constraint_count());
+  const auto& coordinates = system.coordinates();
+  const auto name_of = [&](Index i) -> const std::string& {
+    return coordinates[static_cast<std::size_t>(i)].name;
+  };
+  // The cyclic coordinates.
+  std::vector<Index> cyclic;
+  for (const std::string& name : search.cyclic) {
+    const auto i = system.find_coordinate(name);
+    if (!i) throw std::invalid_argument("--cyclic " + name + ": not a coordinate");
+    if (std::find(cyclic.begin(), cyclic.end(), static_cast<Index>(*i)) != cyclic.end()) {
+      throw std::invalid_argument("--cyclic names " + name + " twice");
+    }
+    cyclic.push_back(static_cast<Index>(*i));
+  }
+  const auto is_cyclic = [&](Index i) {
+    return std::find(cyclic.begin(), cyclic.end(), i) != cyclic.end();
+  };
   // The values given (rates 0 when not) at the parameters' values.
   GiNaC::exmap values;
   for (std::size_t k = 0; k < system.parameters.size(); ++k) {
     values[system.parameters[k].symbol] = parameters[k];
   }
-  OperatingPoint template_point;
-  template_point.q = VectorXd::Zero(n);
-  template_point.qdot = VectorXd::Zero(n);
-  template_point.q_given.assign(static_cast<std::size_t>(n), false);
+  VectorXd q0 = VectorXd::Zero(n), qdot0 = VectorXd::Zero(n);
+  std::vector<bool> q_given(static_cast<std::size_t>(n), false), rate_given = q_given;
+  std::vector<std::optional<double>> momentum(static_cast<std::size_t>(n));
   for (const GivenValue& g : given) {
-    const auto [coordinate, rate] = *state_value(system, g.name);
-    const auto i = static_cast<Index>(coordinate);
     const std::optional<double> v = real_value(g.value, values);
     if (!v) throw std::invalid_argument("--at " + g.name + ": not a real number");
-    (rate ? template_point.qdot : template_point.q)[i] = *v;
-    if (!rate) template_point.q_given[static_cast<std::size_t>(i)] = true;
+    if (const auto i = momentum_coordinate(system, g.name)) {
+      if (!is_cyclic(static_cast<Index>(*i))) {
+        throw std::invalid_argument("--at " + g.name +
+                                    ": a momentum is given for a cyclic "
+                                    "coordinate (say --cyclic " +
+                                    coordinates[*i].name + ")");
+      }
+      momentum[*i] = *v;
+      continue;
+    }
+    const auto [coordinate, rate] = *state_value(system, g.name);
+    (rate ? qdot0 : q0)[static_cast<Index>(coordinate)] = *v;
+    (rate ? rate_given : q_given)[coordinate] = true;
   }
-  Balance balance{compiled, 0.0, template_point.qdot, parameters, {}};
+  for (const Index i : cyclic) {
+    if (momentum[static_cast<std::size_t>(i)] && rate_given[static_cast<std::size_t>(i)]) {
+      throw std::invalid_argument("--at gives both der(" + name_of(i) + ") and p(" + name_of(i) +
+                                  "): give one");
+    }
+  }
+  // Coordinates not given start at the model's initial values (the cyclic ones stay there).
   for (Index i = 0; i < n; ++i) {
-    if (!template_point.q_given[static_cast<std::size_t>(i)]) balance.free.push_back(i);
+    if (!q_given[static_cast<std::size_t>(i)]) {
+      q0[i] = real_value(system.initial_values[static_cast<std::size_t>(i)], values).value_or(0.0);
+    }
   }
+  const Tape momenta = cyclic.empty() ? Tape() : momentum_tape(system, cyclic);
+  SteadyBalance balance{
+      compiled, 0.0,       parameters, q0, qdot0, {}, {}, {}, cyclic.empty() ? nullptr : &momenta,
+      {},       VectorXd()};
+  for (Index i = 0; i < n; ++i) {
+    if (!q_given[static_cast<std::size_t>(i)] && !is_cyclic(i)) balance.free_q.push_back(i);
+  }
+  // A cyclic coordinate's rate: given, from its momentum, or from the constraints it is in (then
+  // its acceleration too where it appears nowhere else); else 0.
+  const std::vector<double> inputs0 = tape_inputs_at(0.0, q0, qdot0, parameters);
+  const std::vector<double> constraints0 = compiled.constraint_tape().evaluate(inputs0);
+  std::vector<double> given_momenta;
+  for (std::size_t k = 0; k < cyclic.size(); ++k) {
+    const Index i = cyclic[k];
+    if (const auto p = momentum[static_cast<std::size_t>(i)]) {
+      balance.free_rate.push_back(i);
+      balance.momentum_given.push_back(static_cast<Index>(k));
+      given_momenta.push_back(*p);
+      continue;
+    }
+    if (rate_given[static_cast<std::size_t>(i)]) continue;
+    bool constrained = false;
+    for (Index c = 0; c < m; ++c) constrained = constrained || constraints0[c * n + i] != 0.0;
+    if (!constrained) continue;
+    balance.free_rate.push_back(i);
+    const auto dynamics = along(compiled.dynamics(), inputs0, static_cast<std::size_t>(1 + i));
+    const auto constraints =
+        along(compiled.constraint_tape(), inputs0, static_cast<std::size_t>(1 + i));
+    const auto zero = [](const std::vector<double>& v) {
+      return std::all_of(v.begin(), v.end(), [](double x) { return x == 0.0; });
+    };
+    if (zero(dynamics.second) && zero(constraints.second)) {
+      balance.free_acceleration.push_back(i);
+    }
+  }
+  balance.momentum_value =
+      Eigen::Map<const VectorXd>(given_momenta.data(), static_cast<Index>(given_momenta.size()));
   // Where each free coordinate starts: angles anywhere on the circle, others near the model's
   // value.
-  VectorXd initial = template_point.q, spread = VectorXd::Zero(n);
+  const VectorXd& initial = q0;
+  VectorXd spread = VectorXd::Zero(n);
   std::vector<bool> angle(static_cast<std::size_t>(n), false);
-  for (const Index i : balance.free) {
-    const auto value = real_value(system.initial_values[static_cast<std::size_t>(i)], values);
-    initial[i] = value.value_or(0.0);
+  for (const Index i : balance.free_q) {
     angle[static_cast<std::size_t>(i)] = is_angle(balance, initial, i);
     spread[i] = 2.0 * (1.0 + std::abs(initial[i]));
   }
-  const double at_initial =
-      balance.residual(initial, VectorXd::Zero(static_cast<Index>(system.constraints.size())))
-          .cwiseAbs()
-          .maxCoeff();
-  const double scale = std::max(1.0, at_initial);
+  const double scale =
+      std::max(1.0, balance.residual(balance.unknowns_at(initial)).cwiseAbs().maxCoeff());
   std::mt19937 random(search.seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::normal_distribution<double> normal(0.0, 1.0);
@@ -203,16 +244,20 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
     if (!c.parametrisation) continue;
     quaternions.emplace_back();
     for (Index i = 0; i < n; ++i) {
-      if (c.expression.has(system.coordinates()[static_cast<std::size_t>(i)].value)) {
+      if (c.expression.has(coordinates[static_cast<std::size_t>(i)].value)) {
         quaternions.back().push_back(i);
       }
     }
   }
+  const auto is_free = [&](Index i) {
+    return std::find(balance.free_q.begin(), balance.free_q.end(), i) != balance.free_q.end();
+  };
   EquilibriumSearchResult result;
+  for (const Index i : cyclic) result.cyclic.push_back(name_of(i));
   std::vector<Equilibrium>& found = result.equilibria;
   for (std::size_t start = 0; start < search.starts; ++start) {
     VectorXd q = initial;
-    for (const Index i : balance.free) {
+    for (const Index i : balance.free_q) {
       q[i] = angle[static_cast<std::size_t>(i)] ? std::numbers::pi * unit(random)
                                                 : initial[i] + spread[i] * unit(random);
     }
@@ -223,35 +268,31 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
         q[i] = normal(random);
         norm += q[i] * q[i];
       }
-      for (const Index i : group) {
-        if (!template_point.q_given[static_cast<std::size_t>(i)])
-          q[i] /= std::sqrt(norm);
-        else
-          q[i] = template_point.q[i];
-      }
+      for (const Index i : group) q[i] = is_free(i) ? q[i] / std::sqrt(norm) : initial[i];
     }
-    const auto solution = solve_from(balance, q, scale);
+    const auto solution = solve_from(balance, balance.unknowns_at(q), scale);
     if (!solution) continue;
-    VectorXd x = solution->first;
-    for (const Index i : balance.free) {
-      if (angle[static_cast<std::size_t>(i)]) x[i] = wrapped(x[i]);
+    SteadyBalance::State x = balance.state(*solution);
+    for (const Index i : balance.free_q) {
+      if (angle[static_cast<std::size_t>(i)]) x.q[i] = wrapped(x.q[i]);
     }
     // Euler parameters e and −e are one rotation: the first that is not 0 made positive
     for (const std::vector<Index>& group : quaternions) {
-      const auto first =
-          std::find_if(group.begin(), group.end(), [&](Index i) { return std::abs(x[i]) > 1e-6; });
-      if (first != group.end() && x[*first] < 0) {
-        for (const Index i : group) x[i] = -x[i];
+      const auto first = std::find_if(group.begin(), group.end(),
+                                      [&](Index i) { return std::abs(x.q[i]) > 1e-6; });
+      if (first != group.end() && x.q[*first] < 0) {
+        for (const Index i : group) x.q[i] = -x.q[i];
       }
     }
-    // linearised there: every coordinate given, the rates as given
+    // linearised there: every coordinate given, the rates as given or solved for
     std::vector<GivenValue> at;
-    for (Index i = 0; i < n; ++i) {
-      const std::string& name = system.coordinates()[static_cast<std::size_t>(i)].name;
-      at.push_back({name, given_number(x[i])});
-    }
+    for (Index i = 0; i < n; ++i) at.push_back({name_of(i), given_number(x.q[i])});
     for (const GivenValue& g : given) {
-      if (state_value(system, g.name)->rate) at.push_back(g);
+      const auto value = state_value(system, g.name);
+      if (value && value->rate) at.push_back(g);
+    }
+    for (const Index i : balance.free_rate) {
+      at.push_back({"der(" + name_of(i) + ")", given_number(x.qdot[i])});
     }
     Equilibrium e;
     try {
@@ -264,15 +305,21 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
       ++result.singular;  // gimbal lock, singular equations
       continue;
     }
+    const auto& ignorable = e.linearization.ignorable;
+    const auto is_ignorable = [&](Index i) {
+      return std::find(ignorable.begin(), ignorable.end(), name_of(i)) != ignorable.end();
+    };
     // the same as one found already? angles modulo 2π, ignorable coordinates aside
     const auto same = [&](const Equilibrium& other) {
-      for (const Index i : balance.free) {
-        const std::string& name = system.coordinates()[static_cast<std::size_t>(i)].name;
-        const auto& ignorable = e.linearization.ignorable;
-        if (std::find(ignorable.begin(), ignorable.end(), name) != ignorable.end()) continue;
+      for (const Index i : balance.free_q) {
+        if (is_ignorable(i)) continue;
         double d = e.point.q[i] - other.point.q[i];
         if (angle[static_cast<std::size_t>(i)]) d = wrapped(d);
         if (std::abs(d) > 1e-6 * (1.0 + std::abs(e.point.q[i]))) return false;
+      }
+      for (const Index i : balance.free_rate) {
+        const double d = e.point.qdot[i] - other.point.qdot[i];
+        if (std::abs(d) > 1e-6 * (1.0 + std::abs(e.point.qdot[i]))) return false;
       }
       return true;
     };
@@ -281,38 +328,27 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
     // the balance's Jacobian: directions along which it does not change, ignorable ones aside
     {
       MatrixXd J;
-      balance.residual(x, solution->second, &J);
+      balance.residual(*solution, &J);
       Eigen::FullPivLU<MatrixXd> lu(J);
       lu.setThreshold(1e-9);
-      std::size_t ignorable_free = 0;
-      for (const Index i : balance.free) {
-        const std::string& name = system.coordinates()[static_cast<std::size_t>(i)].name;
-        const auto& ignorable = e.linearization.ignorable;
-        ignorable_free += std::find(ignorable.begin(), ignorable.end(), name) != ignorable.end();
-      }
+      const auto ignorable_free = static_cast<std::size_t>(
+          std::count_if(balance.free_q.begin(), balance.free_q.end(), is_ignorable));
       const auto nullity = static_cast<std::size_t>(J.cols() - lu.rank());
       e.continuum = nullity > ignorable_free ? nullity - ignorable_free : 0;
     }
-    // Lagrange–Dirichlet at rest with a symmetric stiffness and no velocity constraints
-    const Linearization& L = e.linearization;
-    if (e.point.qdot.cwiseAbs().maxCoeff() == 0.0 && !L.velocity_constraints) {
-      std::vector<Index> kept_positions;
-      for (std::size_t j = 0; j < L.kept.size(); ++j) {
-        if (!L.state[j].starts_with("der(")) kept_positions.push_back(L.kept[j]);
-      }
-      const MatrixXd P = L.to_coordinates.topRows(n)(Eigen::all, kept_positions);
-      const MatrixXd K = P.transpose() * L.all_coordinates.K * P;
-      const double size = K.size() ? K.cwiseAbs().maxCoeff() : 0.0;
-      if (K.size() && (K - K.transpose()).cwiseAbs().maxCoeff() <= 1e-9 * size) {
-        const Eigen::SelfAdjointEigenSolver<MatrixXd> eigen(0.5 * (K + K.transpose()));
-        e.potential_minimum = eigen.eigenvalues().minCoeff() > 1e-9 * size;
-      }
-    }
+    // Lagrange–Dirichlet at rest, Routh with cyclic coordinates
+    e.potential_minimum =
+        energy_minimum(e.linearization, e.point, cyclic,
+                       cyclic.empty() ? MatrixXd(0, n) : momentum_derivative(momenta, e.point));
+    e.amended = !cyclic.empty();
     found.push_back(std::move(e));
   }
+  // in the order of the coordinates, then of the rates
   std::sort(found.begin(), found.end(), [&](const Equilibrium& a, const Equilibrium& b) {
-    for (Index i = 0; i < n; ++i) {
-      if (std::abs(a.point.q[i] - b.point.q[i]) > 1e-9) return a.point.q[i] < b.point.q[i];
+    for (Index i = 0; i < 2 * n; ++i) {
+      const double x = i < n ? a.point.q[i] : a.point.qdot[i - n];
+      const double y = i < n ? b.point.q[i] : b.point.qdot[i - n];
+      if (std::abs(x - y) > 1e-9) return x < y;
     }
     return false;
   });

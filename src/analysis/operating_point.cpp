@@ -32,21 +32,33 @@ std::optional<StateValue> state_value(const System& system, const std::string& n
   return std::nullopt;
 }
 
+std::optional<std::size_t> momentum_coordinate(const System& system, const std::string& name) {
+  if (!name.starts_with("p(") || !name.ends_with(")")) return std::nullopt;
+  return system.find_coordinate(name.substr(2, name.size() - 3));
+}
+
 Expr given_number(double x) {
   return std::abs(x) < std::numeric_limits<double>::min() ? Expr(0) : Expr(GiNaC::numeric(x));
 }
 
 std::vector<GivenValue> parse_given_values(const System& system,
-                                           const std::vector<std::string>& texts) {
+                                           const std::vector<std::string>& texts, bool momenta) {
   std::vector<GivenValue> given;
   std::set<std::string> names;
   const SystemScope scope(system);
   for (const std::string& text : texts) {
     const std::size_t eq = text.find('=');
     const std::string name = text.substr(0, eq);
-    if (eq == std::string::npos || !state_value(system, name)) {
+    if (eq != std::string::npos && !momenta && momentum_coordinate(system, name)) {
       throw std::invalid_argument("--at " + text +
-                                  ": expected NAME=VALUE, NAME a coordinate or der(coordinate)");
+                                  ": a momentum is given only for the steady motions of "
+                                  "`unidyn equilibria --cyclic`; give the rate der(q) here");
+    }
+    if (eq == std::string::npos ||
+        !(state_value(system, name) || (momenta && momentum_coordinate(system, name)))) {
+      throw std::invalid_argument(
+          "--at " + text + ": expected NAME=VALUE, NAME a coordinate" +
+          (momenta ? ", der(coordinate) or p(coordinate)" : " or der(coordinate)"));
     }
     if (!names.insert(name).second) throw std::invalid_argument("--at gives " + name + " twice");
     Expr value;

@@ -131,11 +131,18 @@ void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
                       "coordinate or rate of the operating point, as CSV, and where stability "
                       "changes (on standard error)");
   c.equilibria = app.add_subcommand(
-      "equilibria", "Find the equilibria (or steady motions at given rates) and their stability");
+      "equilibria",
+      "Find the equilibria (or steady motions at given rates or momenta) and their stability");
   c.equilibria->add_option("model", c.model, "MODEL file or bundled model name")->required();
   c.equilibria->add_option("--at", c.at,
-                           "NAME=VALUE: a coordinate held at a value, or a rate der(q) of the "
-                           "steady motions sought (rates not given are 0)");
+                           "NAME=VALUE: a coordinate held at a value, a rate der(q) of the "
+                           "steady motions sought (rates not given are 0), or the momentum p(q) "
+                           "of a cyclic coordinate");
+  c.equilibria
+      ->add_option("--cyclic", c.cyclic,
+                   "Q,...: cyclic coordinates, held rather than solved for; each rate given "
+                   "(der(q)), from its momentum (p(q)), or from the constraints")
+      ->delimiter(',');
   c.equilibria->add_option("--set", c.sets, "NAME=NUMBER: a parameter");
   c.equilibria->add_option("--starts", c.starts, "starting points of the search")
       ->check(CLI::Range(1, 100000))
@@ -152,15 +159,17 @@ int run_analysis_commands(const AnalysisCommands& c) {
   const CommandModel model = read_command_model(c.model);
   const System& system = model.system;
   const auto sets = parameter_sets(system, c.sets);
-  const std::vector<GivenValue> given = parse_given_values(system, c.at);
+  const std::vector<GivenValue> given =
+      parse_given_values(system, c.at, c.equilibria->parsed() && !c.cyclic.empty());
   if (!c.sweep.empty() && c.format != "text") {
     throw std::invalid_argument("--sweep writes CSV: drop --format");
   }
   const EquationsOfMotion equations = lagrange_equations(system);
   const CompiledSystem compiled(system, equations);
   if (c.equilibria->parsed()) {
-    const auto found = find_equilibria(system, compiled, given,
-                                       initial_state(system, sets).parameters, {c.starts});
+    const auto found =
+        find_equilibria(system, compiled, given, initial_state(system, sets).parameters,
+                        {.starts = c.starts, .cyclic = c.cyclic});
     std::cout << (c.format == "json" ? equilibria_json(system, found)
                                      : equilibria_text(system, found, c.starts));
     return 0;

@@ -16,9 +16,10 @@ struct AnalysisCommands {
   std::vector<std::string> at;    // NAME=VALUE of the operating point
   std::vector<std::string> sets;  // NAME=NUMBER of parameters
   std::string format = "text";
-  std::string sweep;         // modes: PARAM=FROM:TO:COUNT
-  std::string output;        // modes --sweep: the CSV file
-  std::size_t starts = 200;  // equilibria: the starting points
+  std::string sweep;                // modes: PARAM=FROM:TO:COUNT
+  std::string output;               // modes --sweep: the CSV file
+  std::size_t starts = 200;         // equilibria: the starting points
+  std::vector<std::string> cyclic;  // equilibria: the cyclic coordinates
 };
 
 void add_analysis_commands(CLI::App& app, AnalysisCommands& commands);

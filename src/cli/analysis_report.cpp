@@ -330,34 +330,51 @@ std::string analysis_json(const System& system, const OperatingPoint& point, con
 std::string equilibria_text(const System& system, const EquilibriumSearchResult& result,
                             std::size_t starts) {
   const std::vector<Equilibrium>& found = result.equilibria;
-  std::string out = fmt::format("{} equilibri{} of {} ({} starts; angles in (-pi, pi]):\n",
-                                found.size(), found.size() == 1 ? "um" : "a", system.name, starts);
+  const bool steady = !result.cyclic.empty();
+  std::string out =
+      fmt::format("{} {} of {} ({}{} starts; angles in (-pi, pi]):\n", found.size(),
+                  steady ? (found.size() == 1 ? "steady motion" : "steady motions")
+                         : (found.size() == 1 ? "equilibrium" : "equilibria"),
+                  system.name, steady ? "cyclic: " + joined(result.cyclic) + "; " : "", starts);
   const auto& q = system.coordinates();
+  const auto has = [](const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  };
   for (std::size_t k = 0; k < found.size(); ++k) {
     const Equilibrium& e = found[k];
-    std::vector<std::string> values;
+    std::vector<std::string> values, rates;
     for (std::size_t i = 0; i < q.size(); ++i) {
-      const auto& ignorable = e.linearization.ignorable;
-      const bool dropped =
-          std::find(ignorable.begin(), ignorable.end(), q[i].name) != ignorable.end();
+      const auto index = static_cast<Eigen::Index>(i);
       values.push_back(q[i].name + " = " +
-                       (dropped ? std::string("any (ignorable)")
-                                : number(e.point.q[static_cast<Eigen::Index>(i)])));
+                       (has(result.cyclic, q[i].name)               ? std::string("any (cyclic)")
+                        : has(e.linearization.ignorable, q[i].name) ? std::string("any (ignorable)")
+                                                                    : number(e.point.q[index])));
+      if (e.point.qdot[index] != 0.0) {
+        rates.push_back("der(" + q[i].name + ") = " + number(e.point.qdot[index]));
+      }
     }
     out += fmt::format("  {}. {}\n", k + 1, joined(values));
+    if (!rates.empty()) out += fmt::format("     {}\n", joined(rates));
     if (e.continuum > 0) {
       out += fmt::format(
-          "     one point of a {}-dimensional continuum of equilibria (the forces "
-          "balance all along it)\n",
-          e.continuum);
+          "     one point of a {}-dimensional continuum of {} (the forces balance all along it)\n",
+          e.continuum, steady ? "steady motions" : "equilibria");
     }
     out += fmt::format("     {}: {}\n", to_string(e.modes.verdict), e.modes.reason);
     if (e.potential_minimum) {
-      out += *e.potential_minimum
-                 ? "     K is positive definite on the constraints, a strict minimum of the "
-                   "potential (amended by any steady drive): stable (Lagrange-Dirichlet)\n"
-                 : "     K is not positive definite on the constraints: no minimum of the "
-                   "potential there\n";
+      if (e.amended) {
+        out += *e.potential_minimum
+                   ? "     the amended potential's Hessian is positive definite on the "
+                     "constraints, a strict minimum: stable at these momenta (Routh)\n"
+                   : "     the amended potential's Hessian is not positive definite on the "
+                     "constraints: no minimum there\n";
+      } else {
+        out += *e.potential_minimum
+                   ? "     K is positive definite on the constraints, a strict minimum of the "
+                     "potential (amended by any steady drive): stable (Lagrange-Dirichlet)\n"
+                   : "     K is not positive definite on the constraints: no minimum of the "
+                     "potential there\n";
+      }
     }
   }
   if (result.singular > 0) {
@@ -379,7 +396,8 @@ std::string equilibria_text(const System& system, const EquilibriumSearchResult&
 std::string equilibria_json(const System& system, const EquilibriumSearchResult& result) {
   const std::vector<Equilibrium>& found = result.equilibria;
   const auto& q = system.coordinates();
-  std::string out = "{\n  \"model\": " + quoted(system.name) + ",\n  \"equilibria\": [";
+  std::string out = "{\n  \"model\": " + quoted(system.name) +
+                    ",\n  \"cyclic\": " + json_names(result.cyclic) + ",\n  \"equilibria\": [";
   for (std::size_t k = 0; k < found.size(); ++k) {
     const Equilibrium& e = found[k];
     out += std::string(k ? ",\n" : "\n") + "    {\"coordinates\": {";
@@ -387,11 +405,17 @@ std::string equilibria_json(const System& system, const EquilibriumSearchResult&
       out += (i ? ", " : "") + quoted(q[i].name) + ": " +
              json_number(e.point.q[static_cast<Eigen::Index>(i)]);
     }
+    out += "}, \"rates\": {";
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      out += (i ? ", " : "") + quoted("der(" + q[i].name + ")") + ": " +
+             json_number(e.point.qdot[static_cast<Eigen::Index>(i)]);
+    }
     out += "}, \"ignorable\": " + json_names(e.linearization.ignorable) +
            ", \"stability\": " + quoted(to_string(e.modes.verdict)) +
            ", \"reason\": " + quoted(e.modes.reason) +
            ", \"continuum\": " + std::to_string(e.continuum) + ", \"potential_minimum\": " +
-           (e.potential_minimum ? (*e.potential_minimum ? "true" : "false") : "null") + "}";
+           (e.potential_minimum ? (*e.potential_minimum ? "true" : "false") : "null") +
+           ", \"amended_potential\": " + (e.amended ? "true" : "false") + "}";
   }
   return out + fmt::format("\n  ],\n  \"starts_singular\": {},\n  \"starts_moving\": {}\n}}\n",
                            result.singular, result.not_steady);

@@ -1,11 +1,14 @@
 // Equilibria by multi-start Newton (analysis/equilibria.hpp) against closed forms: the bead on the
 // rotating hoop (Ex. 3.7) on both sides of its bifurcation, the double pendulum's four, the spring
-// chain's four.
+// chain's four; steady motions with cyclic coordinates: the circular orbit on the smooth cone
+// (Fig. 2.9), the heavy top's steady precession at given rates and at given momenta (Routh's
+// amended potential), the rolling disk circling (checked by simulating it).
 #include "unidyn/analysis/equilibria.hpp"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -15,11 +18,12 @@ namespace unidyn {
 namespace {
 
 std::vector<Equilibrium> equilibria(const std::string& model, const std::vector<std::string>& at,
-                                    const std::vector<std::pair<std::string, double>>& set = {}) {
+                                    const std::vector<std::pair<std::string, double>>& set = {},
+                                    const std::vector<std::string>& cyclic = {}) {
   const System system = load_model(test::model_path(model));
   const CompiledSystem compiled(system, lagrange_equations(system));
-  return find_equilibria(system, compiled, parse_given_values(system, at),
-                         initial_state(system, set).parameters)
+  return find_equilibria(system, compiled, parse_given_values(system, at, !cyclic.empty()),
+                         initial_state(system, set).parameters, {.cyclic = cyclic})
       .equilibria;
 }
 
@@ -154,6 +158,136 @@ TEST(Equilibria, SatellitesTwentyFourRelativeEquilibria) {
     }
   }
   EXPECT_EQ(stable, 4);
+}
+
+}  // namespace
+}  // namespace unidyn
+
+namespace unidyn {
+namespace {
+
+// The largest |Im λ| of a linearisation's modes: its fastest oscillation.
+double fastest_frequency(const Equilibrium& e) {
+  double most = 0.0;
+  for (const Mode& mode : e.modes.modes) most = std::max(most, std::abs(mode.eigenvalue.imag()));
+  return most;
+}
+
+// Fig. 2.9 (dimensionless, α = 20°, h = 5, ω² = 10): at the momentum p(θ) = h the circular orbit
+// w0 solves h²/(w0³ cos²α) − ω²(w0 − 1) − sin α = 0 (2.22): 1.6252669 (the figure's 1.58896 drops
+// the cos²α), its rate h/(w0² cos²α); the orbit is stable (the amended potential's minimum) and
+// oscillates at ω_r² = 3h²/(w0⁴ cos²α) + ω² ≈ 22.17 (the derivative of (2.22)'s right side).
+TEST(Equilibria, SmoothConesCircularOrbitOfFigure2_9) {
+  const double alpha = std::numbers::pi / 9, h = 5, omega2 = 10, c2 = std::pow(std::cos(alpha), 2);
+  const auto found = equilibria("smooth-cone", {"p(theta)=h"}, {}, {"theta"});
+  // R > 0 (R < 0 is the cone's other nappe, below O)
+  ASSERT_EQ(found.size(), 2u);
+  const Equilibrium& e = found[1];
+  const double w0 = e.point.q[0];
+  EXPECT_NEAR(h * h / (w0 * w0 * w0 * c2) - omega2 * (w0 - 1) - std::sin(alpha), 0.0, 1e-12);
+  EXPECT_NEAR(w0, 1.6252669, 1e-7);
+  EXPECT_NEAR(e.point.q[2], std::numbers::pi / 2 - alpha, 1e-14);
+  EXPECT_NEAR(e.point.qdot[1], h / (w0 * w0 * c2), 1e-12);
+  const double frequency2 = 3 * h * h / (std::pow(w0, 4) * c2) + omega2;
+  EXPECT_NEAR(frequency2, 22.17, 0.005);
+  EXPECT_NEAR(std::pow(fastest_frequency(e), 2), frequency2, 1e-9 * frequency2);
+  EXPECT_EQ(e.modes.verdict, Stability::linearly_stable) << e.modes.reason;
+  EXPECT_TRUE(e.amended);
+  EXPECT_TRUE(e.potential_minimum.value_or(false));
+}
+
+// The heavy top (3-1-3 angles, A_O = A + m l² about O): steady precession at rates ψ̇, φ̇ has
+// A_O ψ̇² cos θ − C ω3 ψ̇ + m g l = 0 with ω3 = φ̇ + ψ̇ cos θ, so cos θ = (C φ̇ ψ̇ − m g l) /
+// ((A_O − C) ψ̇²). At momenta p_ψ, p_φ instead, Routh's amended potential
+//   V(θ) = m g l cos θ + (p_ψ − p_φ cos θ)² / (2 A_O sin²θ)
+// has its minimum there, and the nutation's frequency² is V''(θ)/A_O (here by differences).
+TEST(Equilibria, HeavyTopsSteadyPrecessionAtRatesAndAtMomenta) {
+  const double m = 1, g = 9.81, l = 0.05, A = 0.004, C = 0.002, A_O = A + m * l * l;
+  const auto at_rates =
+      equilibria("heavy-top", {"der(psi)=4.5", "der(phi)=60"}, {}, {"psi", "phi"});
+  ASSERT_EQ(at_rates.size(), 2u);  // θ and −θ (the same motion, ψ and φ turned by π)
+  const double cos_theta = (C * 60 * 4.5 - m * g * l) / ((A_O - C) * 4.5 * 4.5);
+  EXPECT_NEAR(at_rates[1].point.q[1], std::acos(cos_theta), 1e-12);
+  EXPECT_NEAR(at_rates[0].point.q[1], -std::acos(cos_theta), 1e-12);
+
+  const double p_psi = 0.06, p_phi = 0.12;
+  const auto at_momenta =
+      equilibria("heavy-top", {"p(psi)=0.06", "p(phi)=0.12"}, {}, {"psi", "phi"});
+  ASSERT_EQ(at_momenta.size(), 2u);
+  const Equilibrium& e = at_momenta[1];
+  const double theta = e.point.q[1];
+  const auto V = [&](double x) {
+    return m * g * l * std::cos(x) +
+           std::pow(p_psi - p_phi * std::cos(x), 2) / (2 * A_O * std::pow(std::sin(x), 2));
+  };
+  const double d = 1e-4;
+  EXPECT_NEAR((V(theta + d) - V(theta - d)) / (2 * d), 0.0, 1e-8);
+  const double V2 = (V(theta + d) - 2 * V(theta) + V(theta - d)) / (d * d);
+  EXPECT_NEAR(std::pow(fastest_frequency(e), 2), V2 / A_O, 1e-6 * V2 / A_O);
+  // its rates keep the momenta: ω3 = p_φ/C, ψ̇ = (p_ψ − p_φ cos θ)/(A_O sin²θ)
+  EXPECT_NEAR(e.point.qdot[2] + e.point.qdot[0] * std::cos(theta), p_phi / C, 1e-10);
+  EXPECT_NEAR(e.point.qdot[0],
+              (p_psi - p_phi * std::cos(theta)) / (A_O * std::pow(std::sin(theta), 2)), 1e-10);
+  EXPECT_TRUE(e.amended);
+  EXPECT_TRUE(e.potential_minimum.value_or(false));
+  EXPECT_EQ(e.modes.verdict, Stability::linearly_stable) << e.modes.reason;
+}
+
+// The rolling disk circling (nonholonomic: its centre's rates follow from the rolling and turn
+// with it): at ψ̇ = 1.5, φ̇ = 12 the lean θ that keeps it steady, checked by simulating from it:
+// θ stays where it was to round-off, and ψ̇, φ̇ do too.
+TEST(Equilibria, RollingDiskCirclesSteadily) {
+  const auto found =
+      equilibria("rolling-disk", {"der(psi)=1.5", "der(phi)=12"}, {}, {"x1", "x2", "psi", "phi"});
+  ASSERT_FALSE(found.empty());
+  const Equilibrium& e = found.back();  // above the plane: x3 > 0
+  ASSERT_GT(e.point.q[2], 0.0);
+  EXPECT_TRUE(e.linearization.velocity_constraints);
+  EXPECT_FALSE(e.potential_minimum.has_value());  // no energy method with rolling
+  std::vector<std::pair<std::string, double>> start;
+  for (const std::string name : {"x1", "x2", "x3", "psi", "theta", "phi"}) {
+    const Eigen::Index i =
+        std::find(e.linearization.coordinates.begin(), e.linearization.coordinates.end(), name) -
+        e.linearization.coordinates.begin();
+    start.push_back({name, e.point.q[i]});
+    start.push_back({"der(" + name + ")", e.point.qdot[i]});
+  }
+  const test::ModelRun run =
+      test::run_model("rolling-disk", start, [](SimulationOptions& o) { o.t_end = 2; });
+  for (std::size_t row = 0; row < run.rows.size(); ++row) {
+    EXPECT_NEAR(run.at(row, "theta"), e.point.q[4], 1e-10) << run.at(row, "t");
+    EXPECT_NEAR(run.at(row, "der(psi)"), 1.5, 1e-9) << run.at(row, "t");
+    EXPECT_NEAR(run.at(row, "der(phi)"), 12, 1e-9) << run.at(row, "t");
+  }
+}
+
+// The torque-free body with ψ cyclic (3-2-1 angles): Routh's amended potential p²/(2 M_ψψ) is
+// least where M_ψψ is largest, about the major axis e3 — the 4 steady rotations there are its
+// minima; about the intermediate axis e2 it has none (and they are unstable).
+TEST(Equilibria, RouthsMinimaOfATorqueFreeBodyAreAboutItsMajorAxis) {
+  const auto found = equilibria("torque-free-body", {"der(psi)=5"}, {}, {"psi"});
+  ASSERT_EQ(found.size(), 8u);
+  int minima = 0;
+  for (const Equilibrium& e : found) {
+    ASSERT_TRUE(e.potential_minimum.has_value());
+    EXPECT_EQ(*e.potential_minimum, e.modes.verdict == Stability::linearly_stable);
+    // e3 along E3, either way: θ and φ multiples of π
+    const bool major = std::abs(std::remainder(e.point.q[2], std::numbers::pi)) < 1e-9;
+    EXPECT_EQ(*e.potential_minimum, major) << e.point.q.transpose();
+    minima += *e.potential_minimum ? 1 : 0;
+  }
+  EXPECT_EQ(minima, 4);
+}
+
+// What cannot be asked: a momentum of a coordinate not said to be cyclic, both a rate and a
+// momentum, a cyclic name that is not a coordinate.
+TEST(Equilibria, CyclicInputRefusedWithItsReason) {
+  EXPECT_THROW(equilibria("smooth-cone", {"p(theta)=5"}, {}, {"R"}), std::invalid_argument);
+  EXPECT_THROW(equilibria("smooth-cone", {"p(theta)=5", "der(theta)=1"}, {}, {"theta"}),
+               std::invalid_argument);
+  EXPECT_THROW(equilibria("smooth-cone", {}, {}, {"nope"}), std::invalid_argument);
+  const System system = load_model(test::model_path("smooth-cone"));
+  EXPECT_THROW(parse_given_values(system, {"p(theta)=5"}), std::invalid_argument);
 }
 
 }  // namespace

@@ -16,7 +16,8 @@ TEST(AnalysisCommands, SameOutputOnEveryRun) {
            "linearize double-pendulum --at theta1=0 theta2=0", "modes bicycle" + kBicycleAt,
            "modes spring-chain --at x1=0 x2=0 --format json",
            "linearize torque-free-body --at 'der(psi)=5' --format json", "equilibria rotating-hoop",
-           "equilibria double-pendulum --format json"}) {
+           "equilibria double-pendulum --format json",
+           "equilibria smooth-cone --cyclic theta --at 'p(theta)=h' --format json"}) {
     const Outcome first = run(command);
     ASSERT_EQ(first.status, 0) << command << ": " << first.err;
     const Outcome again = run(command, "UNIDYN_RANDOM_LAYOUT=1");
@@ -35,12 +36,28 @@ TEST(AnalysisCommands, BadInputRefused) {
         "modes double-pendulum --at theta1=0 --set theta2=1",
         "modes double-pendulum --at theta1=0 --sweep g=1:2", "linearize heavy-top --at theta=0",
         "modes double-pendulum --at theta1=0 --sweep g=1:2:3 --format json",
-        "equilibria double-pendulum --starts 0", "equilibria double-pendulum --at theta1=x"}) {
+        "equilibria double-pendulum --starts 0", "equilibria double-pendulum --at theta1=x",
+        "equilibria smooth-cone --at 'p(theta)=5'", "equilibria smooth-cone --cyclic nope",
+        "equilibria smooth-cone --cyclic theta --at 'p(theta)=5' 'der(theta)=1'",
+        "linearize smooth-cone --at 'p(theta)=5'"}) {
     const Outcome r = run(command);
     EXPECT_EQ(r.status, 2) << command << ": " << r.err;
     EXPECT_TRUE(contains(r.err, "unidyn: error:")) << command << ": " << r.err;
     EXPECT_EQ(r.out, "") << command;
   }
+}
+
+// Fig. 2.9: the circular orbit on the smooth cone at the momentum h, with its rate, stable by
+// Routh.
+TEST(AnalysisCommands, SteadyMotionsAtAMomentum) {
+  const Outcome r = run("equilibria smooth-cone --cyclic theta --at 'p(theta)=h'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(
+      r.out.starts_with("2 steady motions of Particle on a smooth cone with a spring "
+                        "(cyclic: theta;"))
+      << r.out;
+  EXPECT_TRUE(contains(r.out, "R = 1.62526688286, theta = any (cyclic)")) << r.out;
+  EXPECT_TRUE(contains(r.out, "a strict minimum: stable at these momenta (Routh)")) << r.out;
 }
 
 TEST(AnalysisCommands, SweepWritesRowsAndBoundaries) {

@@ -46,15 +46,21 @@ struct StateValue {
 // The coordinate or rate `name` is, if it is one.
 std::optional<StateValue> state_value(const System& system, const std::string& name);
 
+// The coordinate q whose generalised momentum p = ∂T/∂q̇ `name` ("p(q)") is, if it is one (given
+// for the steady motions of `unidyn equilibria --cyclic`).
+std::optional<std::size_t> momentum_coordinate(const System& system, const std::string& name);
+
 // A double as a given value's expression; a subnormal one (below 2.2e-308, which CLN refuses to
 // convert) as 0.
 Expr given_number(double x);
 
 // NAME=VALUE texts (command line) as given values, VALUE parsed in the model's names. Throws
-// std::invalid_argument naming the text: no '=', NAME neither a coordinate nor der(coordinate),
-// NAME given twice, or a VALUE that is not an expression in the parameters.
+// std::invalid_argument naming the text: no '=', NAME neither a coordinate nor der(coordinate)
+// (nor, with `momenta`, p(coordinate)), NAME given twice, or a VALUE that is not an expression in
+// the parameters.
 std::vector<GivenValue> parse_given_values(const System& system,
-                                           const std::vector<std::string>& texts);
+                                           const std::vector<std::string>& texts,
+                                           bool momenta = false);
 
 // The operating point with the given values at the parameters' values. Throws
 // std::invalid_argument (bad input) when a value is not a real number, when the constraints cannot
