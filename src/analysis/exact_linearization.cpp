@@ -4,9 +4,7 @@
 #include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn {
-namespace {
 
-// Whether e holds a floating-point number (a decimal typed on the command line).
 bool has_float(const Expr& e) {
   if (GiNaC::is_a<GiNaC::numeric>(e)) return !e.info(GiNaC::info_flags::crational);
   for (std::size_t k = 0; k < e.nops(); ++k) {
@@ -14,8 +12,6 @@ bool has_float(const Expr& e) {
   }
   return false;
 }
-
-}  // namespace
 
 std::optional<ExactSecondOrder> exact_second_order(const System& system,
                                                    const EquationsOfMotion& equations,

@@ -10,6 +10,7 @@
 #include "analysis_report.hpp"
 #include "command_model.hpp"
 #include "unidyn/analysis/equilibria.hpp"
+#include "unidyn/analysis/exact_state_matrix.hpp"
 #include "unidyn/analysis/parameter_sweep.hpp"
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/integrate/simulation.hpp"
@@ -180,15 +181,16 @@ int run_analysis_commands(const AnalysisCommands& c) {
   const Linearization linearization = linearize(system, compiled, point);
   const bool modes = c.modes->parsed();
   const ModeAnalysis analysis = modes ? analyse_modes(linearization) : ModeAnalysis{};
-  const std::optional<ExactSecondOrder> exact = exact_second_order(system, equations, given);
+  const ExactLinearization exact{
+      exact_second_order(system, equations, given),
+      exact_state_matrix(system, equations, given, point, linearization)};
   if (c.format == "json" || c.format == "latex") {
     std::cout << (c.format == "json" ? analysis_json : analysis_latex)(
-        system, point, linearization, modes ? &analysis : nullptr, exact ? &*exact : nullptr);
+        system, point, linearization, modes ? &analysis : nullptr, exact);
     return 0;
   }
   std::cout << operating_point_text(system, point, linearization)
-            << linearization_text(linearization);
-  if (exact) std::cout << exact_text(system, *exact);
+            << linearization_text(linearization) << exact_text(system, linearization, exact);
   if (modes) std::cout << modes_text(linearization, analysis);
   return 0;
 }

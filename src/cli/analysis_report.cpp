@@ -141,7 +141,7 @@ std::string bmatrix(const std::vector<std::vector<std::string>>& rows) {
 
 std::string analysis_latex(const System& system, const OperatingPoint& point,
                            const Linearization& L, const ModeAnalysis* modes,
-                           const ExactSecondOrder* exact) {
+                           const ExactLinearization& exact) {
   std::string out = "% " + system.name + ": linearised about";
   for (const std::string& v : given_values(system, point)) out += " " + v + ";";
   if (!L.ignorable.empty()) out += " ignorable, dropped: " + joined(L.ignorable);
@@ -154,16 +154,19 @@ std::string analysis_latex(const System& system, const OperatingPoint& point,
   }
   out += "  \\dot{x} &= A x, \\quad x = " + bmatrix(state) + " \\label{eq:linearised} \\\\\n";
   out += "  A &= " + bmatrix(A) + " \\label{eq:state-matrix}";
-  if (exact) {
-    const auto latex = [](const ExprMatrix& X) {
-      std::vector<std::vector<std::string>> rows(X.rows);
-      for (std::size_t i = 0; i < X.rows; ++i) {
-        for (std::size_t j = 0; j < X.cols; ++j) rows[i].push_back(canonical_latex(X(i, j)));
-      }
-      return bmatrix(rows);
-    };
-    out += " \\\\\n  M &= " + latex(exact->M) + ", \\quad C = " + latex(exact->C) +
-           ", \\quad K = " + latex(exact->K) + " \\label{eq:mck}";
+  const auto latex = [](const ExprMatrix& X) {
+    std::vector<std::vector<std::string>> rows(X.rows);
+    for (std::size_t i = 0; i < X.rows; ++i) {
+      for (std::size_t j = 0; j < X.cols; ++j) rows[i].push_back(canonical_latex(X(i, j)));
+    }
+    return bmatrix(rows);
+  };
+  if (exact.state_matrix) {
+    out += " \\\\\n  A &= " + latex(*exact.state_matrix) + " \\label{eq:state-matrix-exact}";
+  }
+  if (const auto& mck = exact.second_order) {
+    out += " \\\\\n  M &= " + latex(mck->M) + ", \\quad C = " + latex(mck->C) +
+           ", \\quad K = " + latex(mck->K) + " \\label{eq:mck}";
   }
   out += "\n\\end{align}\n";
   if (modes) {
@@ -214,39 +217,54 @@ std::string linearization_text(const Linearization& L) {
   return out;
 }
 
-std::string exact_text(const System& system, const ExactSecondOrder& exact) {
+namespace {
+
+// [a, b; c, d] with each entry's canonical text.
+std::string matrix_text(const ExprMatrix& X) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < X.rows; ++i) {
+    out += i ? "; " : "";
+    for (std::size_t j = 0; j < X.cols; ++j) out += (j ? ", " : "") + canonical_text(X(i, j));
+  }
+  return out + "]";
+}
+
+// [["a", "b"], ["c", "d"]].
+std::string matrix_json(const ExprMatrix& X) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < X.rows; ++i) {
+    out += i ? ", [" : "[";
+    for (std::size_t j = 0; j < X.cols; ++j)
+      out += (j ? ", " : "") + quoted(canonical_text(X(i, j)));
+    out += "]";
+  }
+  return out + "]";
+}
+
+std::string exact_json(const ExactLinearization& exact) {
+  if (exact.state_matrix) return "{\"A\": " + matrix_json(*exact.state_matrix) + "}";
+  const ExactSecondOrder& mck = *exact.second_order;
+  return "{\"M\": " + matrix_json(mck.M) + ", \"C\": " + matrix_json(mck.C) +
+         ", \"K\": " + matrix_json(mck.K) + "}";
+}
+
+}  // namespace
+
+std::string exact_text(const System& system, const Linearization& L,
+                       const ExactLinearization& exact) {
+  if (exact.state_matrix) {
+    return "in closed form (the parameters as symbols), x' = A x with\n  A = " +
+           matrix_text(*exact.state_matrix) + "\n  (state in order: " + joined(L.state) + ")\n";
+  }
+  if (!exact.second_order) return "";
+  const ExactSecondOrder& mck = *exact.second_order;
   std::string out = "in closed form (the parameters as symbols), M q'' + C q' + K q = 0 with\n";
-  const auto matrix = [&](const char* name, const ExprMatrix& X) {
-    out += std::string("  ") + name + " = [";
-    for (std::size_t i = 0; i < X.rows; ++i) {
-      out += i ? "; " : "";
-      for (std::size_t j = 0; j < X.cols; ++j) out += (j ? ", " : "") + canonical_text(X(i, j));
-    }
-    out += "]\n";
-  };
-  matrix("M", exact.M);
-  matrix("C", exact.C);
-  matrix("K", exact.K);
-  out += "  (coordinates in order: ";
+  out += "  M = " + matrix_text(mck.M) + "\n  C = " + matrix_text(mck.C) +
+         "\n  K = " + matrix_text(mck.K) + "\n  (coordinates in order: ";
   for (std::size_t i = 0; i < system.coordinates().size(); ++i) {
     out += (i ? ", " : "") + system.coordinates()[i].name;
   }
   return out + ")\n";
-}
-
-std::string exact_json(const ExactSecondOrder& exact) {
-  const auto matrix = [](const ExprMatrix& X) {
-    std::string out = "[";
-    for (std::size_t i = 0; i < X.rows; ++i) {
-      out += i ? ", [" : "[";
-      for (std::size_t j = 0; j < X.cols; ++j)
-        out += (j ? ", " : "") + quoted(canonical_text(X(i, j)));
-      out += "]";
-    }
-    return out + "]";
-  };
-  return "{\"M\": " + matrix(exact.M) + ", \"C\": " + matrix(exact.C) +
-         ", \"K\": " + matrix(exact.K) + "}";
 }
 
 std::string modes_text(const Linearization& L, const ModeAnalysis& modes) {
@@ -279,7 +297,7 @@ std::string modes_text(const Linearization& L, const ModeAnalysis& modes) {
 }
 
 std::string analysis_json(const System& system, const OperatingPoint& point, const Linearization& L,
-                          const ModeAnalysis* modes, const ExactSecondOrder* exact) {
+                          const ModeAnalysis* modes, const ExactLinearization& exact) {
   const auto& q = system.coordinates();
   std::string out = "{\n  \"model\": " + quoted(system.name) + ",\n  \"operating_point\": {";
   const auto values = [&](const Eigen::VectorXd& v, const std::string& prefix,
@@ -305,7 +323,7 @@ std::string analysis_json(const System& system, const OperatingPoint& point, con
            ",\n  \"C\": " + json_matrix(L.second_order->C) +
            ",\n  \"K\": " + json_matrix(L.second_order->K);
   }
-  if (exact) out += ",\n  \"exact\": " + exact_json(*exact);
+  if (exact.state_matrix || exact.second_order) out += ",\n  \"exact\": " + exact_json(exact);
   if (modes) {
     out += ",\n  \"modes\": [";
     for (std::size_t k = 0; k < modes->modes.size(); ++k) {

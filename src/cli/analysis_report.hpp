@@ -17,8 +17,9 @@ std::string operating_point_text(const System& system, const OperatingPoint& poi
 // The state, A, and (without constraints) M, C and K.
 std::string linearization_text(const Linearization& linearization);
 // M, C and K in closed form.
-std::string exact_text(const System& system, const ExactSecondOrder& exact);
-std::string exact_json(const ExactSecondOrder& exact);
+// The closed forms there are (nothing where there are none).
+std::string exact_text(const System& system, const Linearization& linearization,
+                       const ExactLinearization& exact);
 // The eigenvalues with their frequencies, damping ratios and shapes, then the verdict.
 std::string modes_text(const Linearization& linearization, const ModeAnalysis& modes);
 
@@ -26,16 +27,17 @@ std::string modes_text(const Linearization& linearization, const ModeAnalysis& m
 // eigenvalues and the verdict (as comments); names set as the book sets them (\dot{\phi}).
 std::string analysis_latex(const System& system, const OperatingPoint& point,
                            const Linearization& linearization, const ModeAnalysis* modes,
-                           const ExactSecondOrder* exact);
+                           const ExactLinearization& exact);
 
 // One JSON object: "model", "operating_point" {coordinates, rates, accelerations}, "computed",
 // "state", "A", "ignorable", "dependent_coordinates", "dependent_rates", "M", "C", "K" (without
-// constraints), "exact" {M, C, K as texts} (at an exact point without constraints), and with modes
+// constraints), "exact" {M, C, K as texts} or {A as texts} (at an exact point without or with
+// constraints), and with modes
 // "modes" [{re, im, natural_frequency, damping_ratio, shape {name: [re, im]}}], "stability",
 // "reason".
 std::string analysis_json(const System& system, const OperatingPoint& point,
                           const Linearization& linearization, const ModeAnalysis* modes,
-                          const ExactSecondOrder* exact);
+                          const ExactLinearization& exact);
 
 // One line per equilibrium: its coordinates (angles in (−π, π]; an ignorable one "any"), its
 // verdict and the reason, and Lagrange–Dirichlet's word where it applies; then what was left out.

@@ -17,7 +17,8 @@ TEST(AnalysisCommands, SameOutputOnEveryRun) {
            "modes spring-chain --at x1=0 x2=0 --format json",
            "linearize torque-free-body --at 'der(psi)=5' --format json", "equilibria rotating-hoop",
            "equilibria double-pendulum --format json",
-           "equilibria smooth-cone --cyclic theta --at 'p(theta)=h' --format json"}) {
+           "equilibria smooth-cone --cyclic theta --at 'p(theta)=h' --format json",
+           "linearize rolling-disk --at 'theta=pi/2' 'der(phi)=10' --format json"}) {
     const Outcome first = run(command);
     ASSERT_EQ(first.status, 0) << command << ": " << first.err;
     const Outcome again = run(command, "UNIDYN_RANDOM_LAYOUT=1");

@@ -51,7 +51,8 @@ TEST(LatexDocuments, PdflatexCompilesTheLinearisations) {
   for (const char* command :
        {"linearize sleeping-top --at 'der(gamma)=spin'", "modes double-pendulum --at theta1=0",
         "modes bicycle --at 'der(thR)=v/rR' 'der(phi)=0' 'der(delta)=0' 'der(psi)=0'",
-        "linearize rotating-hoop --at 'phi=acos(-g/(R0*Omega^2))'"}) {
+        "linearize rotating-hoop --at 'phi=acos(-g/(R0*Omega^2))'",
+        "linearize rolling-disk --at 'theta=pi/2' 'der(phi)=10'"}) {
     const Outcome r = run(std::string(command) + " --format latex");
     ASSERT_EQ(r.status, 0) << command << ": " << r.err;
     write_file(directory + "/linearised.tex",

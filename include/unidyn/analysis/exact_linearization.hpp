@@ -19,6 +19,17 @@ struct ExactSecondOrder {
   ExprMatrix M, C, K;
 };
 
+// A linearisation in closed form: M, C, K without constraints (exact_second_order), the state
+// matrix A over Linearization::state with them (analysis/exact_state_matrix.hpp); neither where
+// the point is not exact.
+struct ExactLinearization {
+  std::optional<ExactSecondOrder> second_order;
+  std::optional<ExprMatrix> state_matrix;
+};
+
+// Whether e holds a floating-point number (a decimal typed on the command line, not read exactly).
+bool has_float(const Expr& e);
+
 // Nothing when the system has constraints or a value given is a floating-point number.
 std::optional<ExactSecondOrder> exact_second_order(const System& system,
                                                    const EquationsOfMotion& equations,
