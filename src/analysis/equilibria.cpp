@@ -131,6 +131,7 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
                                         const std::vector<GivenValue>& given,
                                         const std::vector<double>& parameters,
                                         const EquilibriumSearch& search) {
+  expect_smooth_contacts(system);
   const auto n = static_cast<Index>(compiled.coordinate_count());
   const auto m = static_cast<Index>(compiled.constraint_count());
   const auto& coordinates = system.coordinates();
@@ -309,10 +310,16 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
     const auto is_ignorable = [&](Index i) {
       return std::find(ignorable.begin(), ignorable.end(), name_of(i)) != ignorable.end();
     };
-    // the same as one found already? angles modulo 2π, ignorable coordinates aside
+    // the same as one found already? angles modulo 2π; ignorable coordinates, and the dependent
+    // ones that move with them (an unbalanced rotor's centre turning with it), aside
+    const MatrixXd moves =
+        e.linearization.to_coordinates.topRows(n)(Eigen::all, e.linearization.dropped);
+    const auto aside = [&](Index i) {
+      return is_ignorable(i) || (moves.cols() > 0 && moves.row(i).cwiseAbs().maxCoeff() > 1e-9);
+    };
     const auto same = [&](const Equilibrium& other) {
       for (const Index i : balance.free_q) {
-        if (is_ignorable(i)) continue;
+        if (aside(i)) continue;
         double d = e.point.q[i] - other.point.q[i];
         if (angle[static_cast<std::size_t>(i)]) d = wrapped(d);
         if (std::abs(d) > 1e-6 * (1.0 + std::abs(e.point.q[i]))) return false;

@@ -83,10 +83,7 @@ std::vector<GivenValue> parse_given_values(const System& system,
   return given;
 }
 
-OperatingPoint operating_point(const System& system, const CompiledSystem& compiled,
-                               const std::vector<GivenValue>& given,
-                               const std::vector<double>& parameters) {
-  const std::size_t n = system.coordinates().size(), m = system.constraints.size();
+void expect_smooth_contacts(const System& system) {
   for (const Constraint& c : system.constraints) {
     if (c.friction) {
       throw std::invalid_argument("constraint '" + c.name +
@@ -94,6 +91,13 @@ OperatingPoint operating_point(const System& system, const CompiledSystem& compi
                                   "smooth, and its motion is not linearised here");
     }
   }
+}
+
+OperatingPoint operating_point(const System& system, const CompiledSystem& compiled,
+                               const std::vector<GivenValue>& given,
+                               const std::vector<double>& parameters) {
+  const std::size_t n = system.coordinates().size(), m = system.constraints.size();
+  expect_smooth_contacts(system);
   // The values given, at the parameters' values.
   GiNaC::exmap values;
   for (std::size_t k = 0; k < system.parameters.size(); ++k) {

@@ -349,17 +349,30 @@ std::string equilibria_text(const System& system, const EquilibriumSearchResult&
                             std::size_t starts) {
   const std::vector<Equilibrium>& found = result.equilibria;
   const bool steady = !result.cyclic.empty();
-  std::string out =
-      fmt::format("{} {} of {} ({}{} starts; angles in (-pi, pi]):\n", found.size(),
-                  steady ? (found.size() == 1 ? "steady motion" : "steady motions")
-                         : (found.size() == 1 ? "equilibrium" : "equilibria"),
-                  system.name, steady ? "cyclic: " + joined(result.cyclic) + "; " : "", starts);
+  const auto on_continua = static_cast<std::size_t>(std::count_if(
+      found.begin(), found.end(), [](const Equilibrium& e) { return e.continuum > 0; }));
+  const std::size_t isolated = found.size() - on_continua;
+  const auto kind = [&](std::size_t count) {
+    return steady ? (count == 1 ? "steady motion" : "steady motions")
+                  : (count == 1 ? "equilibrium" : "equilibria");
+  };
+  std::string out = fmt::format("{} {}", isolated, kind(isolated));
+  if (on_continua > 0) {
+    out = fmt::format("{} isolated {} and {} point{} of continua of {}", isolated, kind(isolated),
+                      on_continua, on_continua == 1 ? "" : "s", kind(2));
+  }
+  out += fmt::format(" of {} ({}{} starts; angles in (-pi, pi]):\n", system.name,
+                     steady ? "cyclic: " + joined(result.cyclic) + "; " : "", starts);
+  // the points of continua after the first few are counted, not listed
+  constexpr std::size_t kContinuumPointsListed = 3;
+  std::size_t continuum_points = 0;
   const auto& q = system.coordinates();
   const auto has = [](const std::vector<std::string>& names, const std::string& name) {
     return std::find(names.begin(), names.end(), name) != names.end();
   };
   for (std::size_t k = 0; k < found.size(); ++k) {
     const Equilibrium& e = found[k];
+    if (e.continuum > 0 && ++continuum_points > kContinuumPointsListed) continue;
     std::vector<std::string> values, rates;
     for (std::size_t i = 0; i < q.size(); ++i) {
       const auto index = static_cast<Eigen::Index>(i);
@@ -394,6 +407,10 @@ std::string equilibria_text(const System& system, const EquilibriumSearchResult&
                      "potential there\n";
       }
     }
+  }
+  if (continuum_points > kContinuumPointsListed) {
+    out += fmt::format("not listed: {} more points of continua (--format json lists every one)\n",
+                       continuum_points - kContinuumPointsListed);
   }
   if (result.singular > 0) {
     out += fmt::format(

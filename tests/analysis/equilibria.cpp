@@ -279,6 +279,22 @@ TEST(Equilibria, RouthsMinimaOfATorqueFreeBodyAreAboutItsMajorAxis) {
   EXPECT_EQ(minima, 4);
 }
 
+// The rotor pinned, its centre x, y turning with its angle ψ (ignorable): points that differ only
+// along ψ — the centre anywhere on its circle — are one equilibrium; the four left are the rotor
+// either way up in the pin, each with ψ any.
+TEST(Equilibria, DependentCoordinatesMovingWithAnIgnorableOneAreOneEquilibrium) {
+  const auto found = equilibria("unbalanced-rotor-pinned", {});
+  EXPECT_EQ(found.size(), 4u);
+  for (const Equilibrium& e : found) {
+    EXPECT_EQ(e.linearization.ignorable, (std::vector<std::string>{"psi"}));
+  }
+}
+
+// Friction is refused, not searched: stick and slip are not smooth.
+TEST(Equilibria, RoughContactsRefused) {
+  EXPECT_THROW(equilibria("block-incline", {}), std::invalid_argument);
+}
+
 // What cannot be asked: a momentum of a coordinate not said to be cyclic, both a rate and a
 // momentum, a cyclic name that is not a coordinate.
 TEST(Equilibria, CyclicInputRefusedWithItsReason) {

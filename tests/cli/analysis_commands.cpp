@@ -40,7 +40,7 @@ TEST(AnalysisCommands, BadInputRefused) {
         "equilibria double-pendulum --starts 0", "equilibria double-pendulum --at theta1=x",
         "equilibria smooth-cone --at 'p(theta)=5'", "equilibria smooth-cone --cyclic nope",
         "equilibria smooth-cone --cyclic theta --at 'p(theta)=5' 'der(theta)=1'",
-        "linearize smooth-cone --at 'p(theta)=5'"}) {
+        "linearize smooth-cone --at 'p(theta)=5'", "equilibria block-incline"}) {
     const Outcome r = run(command);
     EXPECT_EQ(r.status, 2) << command << ": " << r.err;
     EXPECT_TRUE(contains(r.err, "unidyn: error:")) << command << ": " << r.err;
@@ -59,6 +59,17 @@ TEST(AnalysisCommands, SteadyMotionsAtAMomentum) {
       << r.out;
   EXPECT_TRUE(contains(r.out, "R = 1.62526688286, theta = any (cyclic)")) << r.out;
   EXPECT_TRUE(contains(r.out, "a strict minimum: stable at these momenta (Routh)")) << r.out;
+}
+
+// A continuum of equilibria (the knife-edge car at rest, any heading) is counted apart from the
+// isolated ones, and only its first points listed.
+TEST(AnalysisCommands, ContinuaCountedNotListedInFull) {
+  const Outcome r = run("equilibria chaplygin-car --starts 20");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.out.starts_with("0 isolated equilibria and 20 points of continua of equilibria"))
+      << r.out;
+  EXPECT_TRUE(contains(r.out, "not listed: 17 more points of continua")) << r.out;
+  EXPECT_FALSE(contains(r.out, "  4. ")) << r.out;
 }
 
 TEST(AnalysisCommands, SweepWritesRowsAndBoundaries) {
