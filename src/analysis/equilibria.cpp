@@ -131,7 +131,7 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
                                         const std::vector<GivenValue>& given,
                                         const std::vector<double>& parameters,
                                         const EquilibriumSearch& search) {
-  expect_smooth_contacts(system);
+  expect_smooth_contacts(system, parameters);
   const auto n = static_cast<Index>(compiled.coordinate_count());
   const auto m = static_cast<Index>(compiled.constraint_count());
   const auto& coordinates = system.coordinates();

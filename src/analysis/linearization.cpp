@@ -377,6 +377,19 @@ Linearization linearize(const System& system, const CompiledSystem& compiled,
     }
   }
 
+  // A unilateral contact that holds must push (λ ≥ 0, integrate/contacts.hpp): one that would
+  // pull is lost at once.
+  for (Index k = 0; k < m; ++k) {
+    const Constraint& c = system.constraints[static_cast<std::size_t>(k)];
+    if (c.unilateral && point.active[static_cast<std::size_t>(k)] &&
+        point.lambda[k] < -1e-9 * (1.0 + largest(point.lambda))) {
+      throw NotAnOperatingPoint("the unilateral constraint '" + c.name + "' would have to pull " +
+                                "there (lambda = " + detail::to_short_text(point.lambda[k]) +
+                                " < 0): the contact is lost at once, so it is not an equilibrium "
+                                "or a steady motion");
+    }
+  }
+
   // M, C and K in all coordinates; without constraints, the equations themselves.
   out.all_coordinates =
       SecondOrderForm{M, at.balance.middleCols(1 + n, n), at.balance.middleCols(1, n)};

@@ -83,12 +83,20 @@ std::vector<GivenValue> parse_given_values(const System& system,
   return given;
 }
 
-void expect_smooth_contacts(const System& system) {
+void expect_smooth_contacts(const System& system, const std::vector<double>& parameters) {
+  GiNaC::exmap values;
+  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
+    values[system.parameters[k].symbol] = parameters[k];
+  }
   for (const Constraint& c : system.constraints) {
-    if (c.friction) {
-      throw std::invalid_argument("constraint '" + c.name +
-                                  "' has friction: a rough contact's stick and slip are not "
-                                  "smooth, and its motion is not linearised here");
+    if (!c.friction) continue;
+    for (const Expr& mu : {c.friction->dynamic_coefficient, c.friction->static_coefficient}) {
+      const std::optional<double> value = real_value(mu, values);
+      if (value && *value == 0.0) continue;
+      throw std::invalid_argument(
+          "constraint '" + c.name + "' has friction (coefficient " + to_text(mu) +
+          "): a rough contact's stick and slip are not smooth, and its motion is not linearised "
+          "here; with the coefficients 0 (--set) the contact is smooth");
     }
   }
 }
@@ -97,7 +105,7 @@ OperatingPoint operating_point(const System& system, const CompiledSystem& compi
                                const std::vector<GivenValue>& given,
                                const std::vector<double>& parameters) {
   const std::size_t n = system.coordinates().size(), m = system.constraints.size();
-  expect_smooth_contacts(system);
+  expect_smooth_contacts(system, parameters);
   // The values given, at the parameters' values.
   GiNaC::exmap values;
   for (std::size_t k = 0; k < system.parameters.size(); ++k) {

@@ -422,7 +422,7 @@ std::string equilibria_text(const System& system, const EquilibriumSearchResult&
   if (result.not_steady > 0) {
     out += fmt::format(
         "left out: {} solution{} of the balance that move (a rate of a coordinate "
-        "that is not ignorable)\n",
+        "that is not ignorable, or a unilateral contact that would have to pull)\n",
         result.not_steady, result.not_steady == 1 ? "" : "s");
   }
   return out;

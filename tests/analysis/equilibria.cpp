@@ -290,9 +290,16 @@ TEST(Equilibria, DependentCoordinatesMovingWithAnIgnorableOneAreOneEquilibrium) 
   }
 }
 
-// Friction is refused, not searched: stick and slip are not smooth.
-TEST(Equilibria, RoughContactsRefused) {
+// Friction is refused, not searched: stick and slip are not smooth. A contact whose coefficients
+// are 0 is smooth: on the sphere (μ_d = 0), unilateral, the particle rests only on top (unstable);
+// at the bottom the contact would have to pull, and is lost.
+TEST(Equilibria, RoughContactsRefusedUnilateralOnesMustPush) {
   EXPECT_THROW(equilibria("block-incline", {}), std::invalid_argument);
+  const auto sphere = equilibria("particle-leaving-sphere", {});
+  ASSERT_EQ(sphere.size(), 1u);
+  EXPECT_NEAR(sphere[0].point.q[2], 1.0, 1e-12);
+  EXPECT_EQ(sphere[0].modes.verdict, Stability::unstable);
+  EXPECT_THROW(equilibria("particle-leaving-sphere", {}, {{"mu_d", 0.1}}), std::invalid_argument);
 }
 
 // What cannot be asked: a momentum of a coordinate not said to be cyclic, both a rate and a

@@ -40,7 +40,8 @@ TEST(AnalysisCommands, BadInputRefused) {
         "equilibria double-pendulum --starts 0", "equilibria double-pendulum --at theta1=x",
         "equilibria smooth-cone --at 'p(theta)=5'", "equilibria smooth-cone --cyclic nope",
         "equilibria smooth-cone --cyclic theta --at 'p(theta)=5' 'der(theta)=1'",
-        "linearize smooth-cone --at 'p(theta)=5'", "equilibria block-incline"}) {
+        "linearize smooth-cone --at 'p(theta)=5'", "equilibria block-incline",
+        "linearize particle-leaving-sphere --at z=-1"}) {
     const Outcome r = run(command);
     EXPECT_EQ(r.status, 2) << command << ": " << r.err;
     EXPECT_TRUE(contains(r.err, "unidyn: error:")) << command << ": " << r.err;

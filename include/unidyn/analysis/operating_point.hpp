@@ -62,9 +62,9 @@ std::vector<GivenValue> parse_given_values(const System& system,
                                            const std::vector<std::string>& texts,
                                            bool momenta = false);
 
-// Throws std::invalid_argument when a constraint has friction: stick and slip are not smooth, and
-// the analysis is of smooth equations.
-void expect_smooth_contacts(const System& system);
+// Throws std::invalid_argument when a constraint has friction (a coefficient that is not 0 at the
+// parameters' values): stick and slip are not smooth, and the analysis is of smooth equations.
+void expect_smooth_contacts(const System& system, const std::vector<double>& parameters);
 
 // The operating point with the given values at the parameters' values. Throws
 // std::invalid_argument (bad input) when a value is not a real number, when the constraints cannot
