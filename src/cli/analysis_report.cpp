@@ -4,8 +4,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
-#include <charconv>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -20,12 +18,7 @@ namespace {
 
 // A number with `digits` significant digits; zero (of either sign) as 0.
 std::string number(double x, int digits = 12) {
-  if (x == 0.0) return "0";
-  std::array<char, 40> buffer{};
-  const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), x,
-                                 std::chars_format::general, digits)
-                       .ptr;
-  return std::string(buffer.data(), end);
+  return x == 0.0 ? "0" : detail::to_short_text(x, digits);
 }
 
 // a, b i, a+b i or a-b i with `digits` significant digits.
