@@ -33,6 +33,7 @@
 #include "unidyn/kinematics/integrability.hpp"
 #include "unidyn/numeric/code_export.hpp"
 #include "unidyn/numeric/compiled_system.hpp"
+#include "unidyn/numeric/poses.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
 #include "unidyn/symbolic/printing.hpp"
@@ -406,7 +407,15 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());  // bad input, not a failed run
   }
-  csv->header(simulation_columns(system));
+  std::vector<std::string> columns = simulation_columns(system);
+  std::optional<Poses> poses;
+  if (c.poses) {
+    poses.emplace(system);
+    columns.insert(columns.end(), poses->columns().begin(), poses->columns().end());
+  }
+  csv->header(columns);
+  const auto n = static_cast<Eigen::Index>(system.coordinates().size());
+  std::vector<double> with_poses;
   const auto run_start = std::chrono::steady_clock::now();
   // Ctrl-C ends the run after the row being written, with the rows kept and the summary
   const InterruptWatch interrupt;
@@ -415,7 +424,11 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
         if (interrupt.requested()) {
           throw std::runtime_error("interrupted (Ctrl-C)");
         }
-        csv->row(row);
+        if (!poses) return csv->row(row);
+        with_poses = row;
+        poses->append(row[0], Eigen::Map<const Eigen::VectorXd>(row.data() + 1, n),
+                      start.parameters, with_poses);
+        csv->row(with_poses);
       });
   const double run_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
@@ -541,6 +554,9 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.simulate->add_option("--rtol", c.rtol, "relative tolerance (dopri5)")->check(kPositive);
   c.simulate->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
   c.simulate->add_flag("--reduced", c.reduced, "simulate the approach-II equations");
+  c.simulate->add_flag("--poses", c.poses,
+                       "add each body's centre and Euler parameters (B.x B.y B.z B.e0 .. B.e3) and "
+                       "each particle's position (P.x P.y P.z) to the CSV");
   c.simulate->add_flag("--project", c.project,
                        "start from every value as given, projected onto the constraints (all "
                        "values may move) instead of computing the values not given");

@@ -27,6 +27,8 @@ struct ModelCommands {
   bool timings = false;  // derive, check: each phase's time on standard error
   // simulate: the old start — every value as given, then projected onto the constraints
   bool project = false;
+  bool poses =
+      false;  // simulate: each body's centre and Euler parameters, each particle's position
   std::string evaluation = "native";  // simulate: native (when a compiler is present) or tape
 };
 

@@ -371,6 +371,25 @@ TEST(CliModels, SimulateWritesCsv) {
   EXPECT_TRUE(contains(r.out, "conserved H3: initial ")) << r.out;
 }
 
+// --poses: the top's centre and Euler parameters after the columns of the run, unit norm.
+TEST(CliModels, SimulatePosesAddsBodyColumns) {
+  const std::string csv_path = temp_path("top-poses.csv");
+  const Outcome r = run("simulate heavy-top --poses -o '" + csv_path + "' --t-end 0.1");
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  const Csv csv = parse_csv(read_file(csv_path));
+  std::remove(csv_path.c_str());
+  const std::vector<std::string> tail(csv.columns.end() - 7, csv.columns.end());
+  EXPECT_EQ(tail, (std::vector<std::string>{"top.x", "top.y", "top.z", "top.e0", "top.e1", "top.e2",
+                                            "top.e3"}));
+  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+    const double e0 = csv.at(i, "top.e0"), e1 = csv.at(i, "top.e1"), e2 = csv.at(i, "top.e2"),
+                 e3 = csv.at(i, "top.e3");
+    EXPECT_NEAR(e0 * e0 + e1 * e1 + e2 * e2 + e3 * e3, 1.0, 1e-14) << i;
+  }
+  EXPECT_NEAR(csv.at(0, "top.e0"), std::cos(0.15), 1e-15);  // θ = 0.3 about E1
+  EXPECT_NEAR(csv.at(0, "top.e1"), std::sin(0.15), 1e-15);
+}
+
 // The helix has two constraints: one lambda(<name>) column each; the constraints hold.
 TEST(CliModels, SimulateHelixConstraintColumns) {
   const std::string csv_path = temp_path("helix.csv");
