@@ -2,6 +2,7 @@
 #include "model_commands.hpp"
 
 #include "command_model.hpp"
+#include "simulation_setup.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -40,58 +41,6 @@
 
 namespace unidyn::cli {
 namespace {
-
-// With --reduced, the model's approach-II form (the notes on what was eliminated go to standard
-// error).
-System command_system(const ModelCommands& c, const System& loaded) {
-  if (!c.reduced) return loaded;
-  Reduction reduction = eliminate_constraints(loaded);
-  for (const auto& note : reduction.notes) fmt::print(stderr, "approach II: {}\n", note);
-  return std::move(reduction.system);
-}
-
-// The initial state before its completion: of the system run, and with --reduced, when a value or
-// rate is given for a coordinate that approach II eliminated, of the full model too, whose given
-// values (the eliminated one's included) the completion keeps. Bad input (an unknown --set name)
-// throws here, before anything is printed.
-struct CommandStart {
-  SimulationStart start;
-  std::optional<SimulationStart> full;
-};
-CommandStart command_start(const ModelCommands& c, const System& full, const System& system) {
-  const auto sets = parse_sets(c.sets);
-  if (c.reduced) {
-    SimulationStart full_start = initial_state(full, sets);
-    if (gives_eliminated_values(full, full_start, system)) {
-      if (c.project) {
-        throw std::invalid_argument(
-            "--project cannot keep a value given for a coordinate that --reduced eliminates: "
-            "drop one of them");
-      }
-      SimulationStart start = restricted_start(full, full_start, system);
-      return {std::move(start), std::move(full_start)};
-    }
-  }
-  return {initial_state(system, sets), std::nullopt};
-}
-
-// Completes the start (integrate/initial_state.hpp) and returns what was computed: with the full
-// model's start, from all of its constraints (the eliminated ones included), then restricted to
-// the reduced coordinates. Throws InitialStateError naming a violated constraint.
-std::vector<std::string> complete_command_start(CommandStart& s, const System& full,
-                                                const System& system,
-                                                const CompiledSystem& compiled) {
-  std::vector<std::string> computed;
-  if (s.full) {
-    const CompiledSystem full_compiled(full, kane_equations(full));
-    computed = complete_initial_state(full, full_compiled, *s.full);
-    s.start = restricted_start(full, *s.full, system);
-  }
-  for (auto& line : complete_initial_state(system, compiled, s.start)) {
-    computed.push_back(std::move(line));
-  }
-  return computed;
-}
 
 EquationFormat parse_format(const std::string& format) {
   if (format == "text") return EquationFormat::text;
@@ -294,26 +243,6 @@ int run_check(const ModelCommands& c, const CommandModel& model) {
   return agree && state_ok ? 0 : 1;
 }
 
-// The model's simulate: settings with the command line's overrides.
-SimulationOptions options_for(const System& system, const ModelCommands& c) {
-  SimulationOptions o = simulation_options(system.simulate);
-  if (c.t_end > 0) o.t_end = c.t_end;
-  if (c.output_step > 0) o.output_step = c.output_step;
-  if (!c.integrator.empty()) o.method = c.integrator;
-  if (c.rtol > 0) {
-    o.rtol = c.rtol;
-    o.atol = std::min(system.simulate.atol, o.rtol * 1e-2);
-  }
-  // a run asked for more rows than anyone can use would fill the disk
-  if ((o.t_end / o.output_step) > 1e8) {
-    throw std::invalid_argument("--t-end / --output-step asks for more than 10^8 rows");
-  }
-  if (o.method != "dopri5" && o.method != "rk4" && o.method != "cvode" && o.method != "rattle") {
-    throw std::invalid_argument("--method must be dopri5, rk4, cvode or rattle");
-  }
-  return o;
-}
-
 // SIGINT (Ctrl-C) while a simulation runs: noted, so that the run ends at the next row with its
 // rows and summary; a second one ends the process at once. Not caught when it was ignored (a
 // background job, nohup).
@@ -337,45 +266,6 @@ class InterruptWatch {
  private:
   void (*previous_)(int) = SIG_DFL;
 };
-
-// The summary's figures of the rows: energy, constraint residuals and each multiplier's range,
-// the initial projection, gimbal lock, conserved quantities.
-void write_run_figures(std::FILE* out, const System& system, const SimulationSummary& s) {
-  if (s.has_energy && s.energy_not_conserved.empty()) {
-    fmt::print(out, "  energy: initial {:.12g}, relative drift {:.3g}\n", s.energy_initial,
-               s.energy_relative_drift);
-  } else if (s.has_energy) {
-    fmt::print(out,
-               "  energy not conserved ({}): E(0) = {:.12g}, E({:.6g}) = {:.12g}, change {:.6g}\n",
-               s.energy_not_conserved, s.energy_initial, s.last_row_time, s.energy_final,
-               s.energy_final - s.energy_initial);
-  }
-  if (!system.constraints.empty()) {
-    fmt::print(out, "  constraint residuals: max |Psi| {:.3g}, max |A q' + e| {:.3g}\n",
-               s.max_position_residual, s.max_velocity_residual);
-    if (s.initial_projection > 1e-10) {
-      fmt::print(out, "  note: the initial state was moved by {:.3g} onto the constraints\n",
-                 s.initial_projection);
-    }
-    for (const auto& m : s.multipliers) {
-      if (m.held) fmt::print(out, "  lambda({}): from {:.6g} to {:.6g}\n", m.name, m.min, m.max);
-    }
-  }
-  for (const Body& body : system.bodies) {
-    if (body.chart) {
-      fmt::print(out,
-                 "  Euler angles: closest to gimbal lock |[g1,g2,g3]| = {:.3g} at t = {:.6g}\n",
-                 s.closest_gimbal_lock, s.closest_gimbal_lock_time);
-      break;
-    }
-  }
-  for (const auto& d : s.conserved_drift) {
-    fmt::print(out, "  conserved {}: initial {:.12g}, max change {:.3g}", d.name, d.initial,
-               d.max_change);
-    if (d.initial != 0.0) fmt::print(out, " (relative {:.3g})", d.max_change / std::abs(d.initial));
-    fmt::print(out, "\n");
-  }
-}
 
 int run_simulate(const ModelCommands& c, const CommandModel& model) {
   const System system = command_system(c, model.system);
@@ -469,7 +359,7 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
                printable(fmt::format("{}", fmt::join(computed, ", "))));
   }
   // figures of the rows computed: none when the run failed at its start
-  if (s.rows > 0) write_run_figures(out, system, s);
+  if (s.rows > 0) fmt::print(out, "{}", run_figures(system, s));
   for (const auto& phase : s.phases) {
     if (&phase == &s.phases.front()) fmt::print(out, "  phases and events:\n");
     fmt::print(out, "    t = {:.12g}: {}\n", phase.t, printable(phase.what));

@@ -1,0 +1,116 @@
+// What `simulate` and `report` share.
+#include "simulation_setup.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <iterator>
+
+#include "command_model.hpp"
+#include "unidyn/equations/kane.hpp"
+#include "unidyn/equations/reduction.hpp"
+#include "unidyn/integrate/initial_state.hpp"
+
+namespace unidyn::cli {
+
+System command_system(const ModelCommands& c, const System& loaded) {
+  if (!c.reduced) return loaded;
+  Reduction reduction = eliminate_constraints(loaded);
+  for (const auto& note : reduction.notes) fmt::print(stderr, "approach II: {}\n", note);
+  return std::move(reduction.system);
+}
+
+CommandStart command_start(const ModelCommands& c, const System& full, const System& system) {
+  const auto sets = parse_sets(c.sets);
+  if (c.reduced) {
+    SimulationStart full_start = initial_state(full, sets);
+    if (gives_eliminated_values(full, full_start, system)) {
+      if (c.project) {
+        throw std::invalid_argument(
+            "--project cannot keep a value given for a coordinate that --reduced eliminates: "
+            "drop one of them");
+      }
+      SimulationStart start = restricted_start(full, full_start, system);
+      return {std::move(start), std::move(full_start)};
+    }
+  }
+  return {initial_state(system, sets), std::nullopt};
+}
+
+std::vector<std::string> complete_command_start(CommandStart& s, const System& full,
+                                                const System& system,
+                                                const CompiledSystem& compiled) {
+  std::vector<std::string> computed;
+  if (s.full) {
+    const CompiledSystem full_compiled(full, kane_equations(full));
+    computed = complete_initial_state(full, full_compiled, *s.full);
+    s.start = restricted_start(full, *s.full, system);
+  }
+  for (auto& line : complete_initial_state(system, compiled, s.start)) {
+    computed.push_back(std::move(line));
+  }
+  return computed;
+}
+
+SimulationOptions options_for(const System& system, const ModelCommands& c) {
+  SimulationOptions o = simulation_options(system.simulate);
+  if (c.t_end > 0) o.t_end = c.t_end;
+  if (c.output_step > 0) o.output_step = c.output_step;
+  if (!c.integrator.empty()) o.method = c.integrator;
+  if (c.rtol > 0) {
+    o.rtol = c.rtol;
+    o.atol = std::min(system.simulate.atol, o.rtol * 1e-2);
+  }
+  // a run asked for more rows than anyone can use would fill the disk
+  if ((o.t_end / o.output_step) > 1e8) {
+    throw std::invalid_argument("--t-end / --output-step asks for more than 10^8 rows");
+  }
+  if (o.method != "dopri5" && o.method != "rk4" && o.method != "cvode" && o.method != "rattle") {
+    throw std::invalid_argument("--method must be dopri5, rk4, cvode or rattle");
+  }
+  return o;
+}
+
+std::string run_figures(const System& system, const SimulationSummary& s) {
+  fmt::memory_buffer buffer;
+  const auto out = std::back_inserter(buffer);
+  if (s.has_energy && s.energy_not_conserved.empty()) {
+    fmt::format_to(out, "  energy: initial {:.12g}, relative drift {:.3g}\n", s.energy_initial,
+                   s.energy_relative_drift);
+  } else if (s.has_energy) {
+    fmt::format_to(
+        out, "  energy not conserved ({}): E(0) = {:.12g}, E({:.6g}) = {:.12g}, change {:.6g}\n",
+        s.energy_not_conserved, s.energy_initial, s.last_row_time, s.energy_final,
+        s.energy_final - s.energy_initial);
+  }
+  if (!system.constraints.empty()) {
+    fmt::format_to(out, "  constraint residuals: max |Psi| {:.3g}, max |A q' + e| {:.3g}\n",
+                   s.max_position_residual, s.max_velocity_residual);
+    if (s.initial_projection > 1e-10) {
+      fmt::format_to(out, "  note: the initial state was moved by {:.3g} onto the constraints\n",
+                     s.initial_projection);
+    }
+    for (const auto& m : s.multipliers) {
+      if (m.held)
+        fmt::format_to(out, "  lambda({}): from {:.6g} to {:.6g}\n", m.name, m.min, m.max);
+    }
+  }
+  for (const Body& body : system.bodies) {
+    if (body.chart) {
+      fmt::format_to(out,
+                     "  Euler angles: closest to gimbal lock |[g1,g2,g3]| = {:.3g} at t = {:.6g}\n",
+                     s.closest_gimbal_lock, s.closest_gimbal_lock_time);
+      break;
+    }
+  }
+  for (const auto& d : s.conserved_drift) {
+    fmt::format_to(out, "  conserved {}: initial {:.12g}, max change {:.3g}", d.name, d.initial,
+                   d.max_change);
+    if (d.initial != 0.0)
+      fmt::format_to(out, " (relative {:.3g})", d.max_change / std::abs(d.initial));
+    fmt::format_to(out, "\n");
+  }
+  return fmt::to_string(buffer);
+}
+
+}  // namespace unidyn::cli

@@ -1,0 +1,372 @@
+// The page of `unidyn report`: the model and its equations, plots of the run, and the run in 3-D.
+// Everything it shows is in the page's JSON (id "unidyn-data", written by src/report/report_data):
+// nothing is fetched. Opened with #selftest it checks itself and writes what it found into
+// <pre id="selftest"> (the browser tests read it); with #t=T it shows the run paused at time T.
+import {
+  AmbientLight,
+  AxesHelper,
+  BufferGeometry,
+  Color,
+  DirectionalLight,
+  Float32BufferAttribute,
+  GridHelper,
+  Group,
+  Line,
+  LineBasicMaterial,
+  Matrix4,
+  Mesh,
+  MeshStandardMaterial,
+  PerspectiveCamera,
+  Quaternion,
+  Scene,
+  SphereGeometry,
+  Vector3,
+  WebGLRenderer,
+} from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import uPlot from 'uplot';
+import 'uplot/dist/uPlot.min.css';
+import katex from 'katex';
+import './report.css';
+
+const errors = [];
+window.addEventListener('error', (e) => errors.push(String(e.message)));
+
+const data = JSON.parse(document.getElementById('unidyn-data').textContent);
+const run = data.run;
+const time = run.columns.t;
+const palette = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f0e', '#9467bd', '#8c564b', '#e377c2',
+  '#17becf', '#7f7f7f', '#bcbd22'];
+
+// A DOM element with attributes and children.
+function element(tag, attributes = {}, ...children) {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attributes)) e.setAttribute(k, v);
+  for (const c of children) e.append(c);
+  return e;
+}
+
+const app = document.getElementById('app');
+const section = (title, id) => {
+  const s = element('section', { id }, element('h2', {}, title));
+  app.append(s);
+  return s;
+};
+
+// --- The model: name, reference, parameters, coordinates --------------------------------------
+app.append(element('h1', {}, data.model.name));
+if (data.model.reference) app.append(element('p', { class: 'reference' }, data.model.reference));
+{
+  const s = section('Model', 'model');
+  const table = element('table', { class: 'parameters' });
+  table.append(element('tr', {}, element('th', {}, 'parameter'), element('th', {}, 'value')));
+  for (const [name, value] of data.model.parameters) {
+    table.append(element('tr', {}, element('td', {}, name), element('td', {}, String(value))));
+  }
+  s.append(table);
+  s.append(element('p', {}, 'Coordinates: ' + data.model.coordinates.join(', ')));
+}
+
+// --- The equations (LaTeX from `unidyn derive --format latex`, as MathML) ----------------------
+// The align environment of a LaTeX document as KaTeX's aligned, without labels and \nonumber.
+function displayable(tex) {
+  return tex
+    .replace(/\\label\{[^}]*\}/g, '')
+    .replace(/\\nonumber/g, '')
+    .replace(/\\begin\{align\}/g, '\\begin{aligned}')
+    .replace(/\\end\{align\}/g, '\\end{aligned}');
+}
+{
+  const s = section('Equations of motion', 'equations');
+  for (const block of data.equations.latex) {
+    const div = element('div', { class: 'math' });
+    div.innerHTML = katex.renderToString(displayable(block), {
+      displayMode: true, output: 'mathml', throwOnError: false, strict: 'ignore',
+    });
+    s.append(div);
+  }
+  for (const note of data.equations.notes) s.append(element('p', { class: 'note' }, note));
+  if (data.equations.check) s.append(element('pre', {}, data.equations.check));
+}
+
+// --- The run: its summary, events, plots --------------------------------------------------------
+let cursorTime = time[0];
+const charts = [];
+const sync = uPlot.sync('unidyn');
+// Events and phases as vertical lines, the animation's time as a dashed one.
+function markers(u) {
+  const ctx = u.ctx;
+  const { top, height } = u.bbox;
+  ctx.save();
+  ctx.lineWidth = 1;
+  for (const e of run.events) {
+    const x = u.valToPos(e.t, 'x', true);
+    ctx.strokeStyle = '#aa3300';
+    ctx.beginPath();
+    ctx.moveTo(x, top);
+    ctx.lineTo(x, top + height);
+    ctx.stroke();
+  }
+  const x = u.valToPos(cursorTime, 'x', true);
+  ctx.strokeStyle = '#000';
+  ctx.setLineDash([4, 4]);
+  ctx.beginPath();
+  ctx.moveTo(x, top);
+  ctx.lineTo(x, top + height);
+  ctx.stroke();
+  ctx.restore();
+}
+function plot(parent, title, names) {
+  const present = names.filter((n) => run.columns[n] !== undefined);
+  if (present.length === 0) return;
+  const box = element('div', { class: 'plot' });
+  parent.append(box);
+  const width = Math.min(900, Math.max(400, app.clientWidth - 40));
+  const chart = new uPlot({
+    title, width, height: 260,
+    cursor: { sync: { key: sync.key } },
+    scales: { x: { time: false } },
+    series: [{ label: 't' }, ...present.map((n, k) => ({
+      label: n, stroke: palette[k % palette.length], width: 1.5,
+    }))],
+    hooks: { draw: [markers] },
+  }, [time, ...present.map((n) => run.columns[n])], box);
+  charts.push(chart);
+}
+{
+  const s = section('Run', 'run');
+  s.append(element('pre', {}, run.summary));
+  if (run.events.length) {
+    const list = element('ul', { class: 'events' });
+    for (const e of run.events) list.append(element('li', {}, `t = ${e.t}: ${e.what}`));
+    s.append(list);
+  }
+  for (const group of run.groups) plot(s, group.title, group.columns);
+}
+
+// --- Phase portraits: each coordinate against its rate, the animation's point on it ------------
+const portraits = [];
+{
+  const s = section('Phase portraits', 'phase');
+  const row = element('div', { class: 'portraits' });
+  s.append(row);
+  for (const q of data.model.coordinates) {
+    const x = run.columns[q], y = run.columns[`der(${q})`];
+    if (!x || !y) continue;
+    const canvas = element('canvas', { width: 260, height: 220, class: 'portrait' });
+    row.append(element('figure', {}, canvas, element('figcaption', {}, `${q} vs der(${q})`)));
+    portraits.push({ canvas, x, y });
+  }
+}
+function drawPortrait({ canvas, x, y }, index) {
+  const ctx = canvas.getContext('2d');
+  const w = canvas.width, h = canvas.height, pad = 12;
+  const range = (v) => {
+    let lo = Math.min(...v), hi = Math.max(...v);
+    if (hi - lo < 1e-12) { lo -= 1; hi += 1; }
+    return [lo, hi];
+  };
+  const [x0, x1] = range(x), [y0, y1] = range(y);
+  const px = (v) => pad + (v - x0) / (x1 - x0) * (w - 2 * pad);
+  const py = (v) => h - pad - (v - y0) / (y1 - y0) * (h - 2 * pad);
+  ctx.fillStyle = '#fff';
+  ctx.fillRect(0, 0, w, h);
+  ctx.strokeStyle = palette[0];
+  ctx.beginPath();
+  for (let k = 0; k < x.length; ++k) (k ? ctx.lineTo : ctx.moveTo).call(ctx, px(x[k]), py(y[k]));
+  ctx.stroke();
+  ctx.fillStyle = '#000';
+  ctx.beginPath();
+  ctx.arc(px(x[index]), py(y[index]), 4, 0, 2 * Math.PI);
+  ctx.fill();
+}
+
+// --- The run in 3-D: particles as spheres, bodies as their ellipsoids of inertia ---------------
+const scene3d = section('Motion', 'motion');
+const controls = element('div', { class: 'controls' });
+const play = element('button', {}, 'Pause');
+const slider = element('input', { type: 'range', min: 0, max: time.length - 1, value: 0 });
+const speed = element('select', {});
+for (const v of ['0.25', '0.5', '1', '2', '4']) {
+  const o = element('option', { value: v }, `${v}×`);
+  if (v === '1') o.selected = true;
+  speed.append(o);
+}
+const frames = element('input', { type: 'checkbox' });
+const clock = element('span', { class: 'clock' }, 't = 0');
+controls.append(play, slider, speed, element('label', {}, frames, ' body frames'), clock);
+scene3d.append(controls);
+const view = element('div', { class: 'view' });
+scene3d.append(view);
+
+const scene = new Scene();
+scene.background = new Color('#f4f4f0');
+const camera = new PerspectiveCamera(45, 16 / 9, 0.001, 1000);
+const renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+renderer.setSize(Math.min(900, app.clientWidth - 40), 480);
+view.append(renderer.domElement);
+const orbit = new OrbitControls(camera, renderer.domElement);
+scene.add(new AmbientLight(0xffffff, 0.6));
+const sun = new DirectionalLight(0xffffff, 1.4);
+sun.position.set(3, 2, 5);
+scene.add(sun);
+
+// The book's frame: E3 up, as three's y is; (x, y, z) → (x, z, −y).
+const toView = (x, y, z) => new Vector3(x, z, -y);
+const { extent, center } = data.scene;
+const size = Math.max(extent, 1e-3);
+const grid = new GridHelper(4 * size, 20, 0x999999, 0xcccccc);
+grid.position.copy(toView(center[0], center[1], 0));
+scene.add(grid);
+const axes = new AxesHelper(0.5 * size);
+scene.add(axes);
+
+const actors = [];
+data.scene.particles.forEach((p, k) => {
+  const mesh = new Mesh(new SphereGeometry(p.radius, 24, 16),
+    new MeshStandardMaterial({ color: palette[k % palette.length] }));
+  scene.add(mesh);
+  const trail = new Line(new BufferGeometry(), new LineBasicMaterial({ color: palette[k % palette.length] }));
+  scene.add(trail);
+  const columns = ['x', 'y', 'z'].map((c) => run.columns[`${p.name}.${c}`]);
+  actors.push({ kind: 'particle', mesh, trail, columns });
+});
+data.scene.bodies.forEach((b, k) => {
+  const group = new Group();
+  const shape = new Mesh(new SphereGeometry(1, 32, 20),
+    new MeshStandardMaterial({ color: palette[(k + 3) % palette.length], roughness: 0.6 }));
+  shape.scale.set(...b.semi_axes);
+  // the principal axes in the body frame
+  const m = new Matrix4();
+  const a = b.principal_axes;
+  m.set(a[0][0], a[0][1], a[0][2], 0, a[1][0], a[1][1], a[1][2], 0, a[2][0], a[2][1], a[2][2], 0,
+    0, 0, 0, 1);
+  shape.quaternion.setFromRotationMatrix(m);
+  group.add(shape);
+  const frame = new AxesHelper(1.5 * Math.max(...b.semi_axes));
+  frame.visible = false;
+  group.add(frame);
+  scene.add(group);
+  const columns = ['x', 'y', 'z', 'e0', 'e1', 'e2', 'e3'].map((c) => run.columns[`${b.name}.${c}`]);
+  actors.push({ kind: 'body', group, frame, columns });
+});
+// the book's frame in three's: a rotation taking (x, y, z) to (x, z, −y)
+const bookToView = new Quaternion().setFromAxisAngle(new Vector3(1, 0, 0), -Math.PI / 2);
+scene.rotation.set(0, 0, 0);
+camera.position.copy(toView(center[0] + 2.2 * size, center[1] - 2.8 * size, center[2] + 1.6 * size));
+orbit.target.copy(toView(...center));
+orbit.update();
+
+let index = 0;
+function show(k) {
+  index = k;
+  cursorTime = time[k];
+  for (const actor of actors) {
+    const v = actor.columns.map((c) => c[k]);
+    if (actor.kind === 'particle') {
+      actor.mesh.position.copy(toView(v[0], v[1], v[2]));
+      const points = [];
+      for (let j = 0; j <= k; ++j) {
+        const p = toView(actor.columns[0][j], actor.columns[1][j], actor.columns[2][j]);
+        points.push(p.x, p.y, p.z);
+      }
+      actor.trail.geometry.setAttribute('position', new Float32BufferAttribute(points, 3));
+    } else {
+      actor.group.position.copy(toView(v[0], v[1], v[2]));
+      // Q of the body in the book's frame, then the book's frame in three's
+      const q = new Quaternion(v[4], v[5], v[6], v[3]);
+      actor.group.quaternion.copy(bookToView).multiply(q);
+      actor.frame.visible = frames.checked;
+    }
+  }
+  slider.value = String(k);
+  clock.textContent = `t = ${time[k].toFixed(3)}`;
+  for (const c of charts) c.redraw(false, false);
+  portraits.forEach((p) => drawPortrait(p, k));
+  renderer.render(scene, camera);
+}
+
+// Playing: the run's time follows the clock at the speed chosen.
+let playing = true, start = performance.now(), startTime = time[0];
+const hash = new URLSearchParams(location.hash.slice(1));
+if (hash.has('t')) {
+  playing = false;
+  play.textContent = 'Play';
+  const t = Number(hash.get('t'));
+  let k = 0;
+  while (k + 1 < time.length && time[k + 1] <= t) ++k;
+  index = k;
+}
+play.addEventListener('click', () => {
+  playing = !playing;
+  play.textContent = playing ? 'Pause' : 'Play';
+  start = performance.now();
+  startTime = time[index];
+});
+slider.addEventListener('input', () => {
+  show(Number(slider.value));
+  start = performance.now();
+  startTime = time[index];
+});
+speed.addEventListener('change', () => {
+  start = performance.now();
+  startTime = time[index];
+});
+frames.addEventListener('change', () => show(index));
+orbit.addEventListener('change', () => renderer.render(scene, camera));
+function frame() {
+  if (playing) {
+    let t = startTime + (performance.now() - start) / 1000 * Number(speed.value);
+    if (t > time[time.length - 1]) {
+      t = time[0];
+      start = performance.now();
+      startTime = t;
+    }
+    let k = index;
+    if (time[k] > t) k = 0;
+    while (k + 1 < time.length && time[k + 1] <= t) ++k;
+    if (k !== index || k === 0) show(k);
+  }
+  requestAnimationFrame(frame);
+}
+show(index);
+requestAnimationFrame(frame);
+
+// --- #selftest: what the browser tests check ----------------------------------------------------
+// Whether a canvas has pixels of more than one colour.
+function drawn(canvas) {
+  const probe = document.createElement('canvas');
+  probe.width = canvas.width;
+  probe.height = canvas.height;
+  const ctx = probe.getContext('2d');
+  ctx.drawImage(canvas, 0, 0);
+  const pixels = ctx.getImageData(0, 0, probe.width, probe.height).data;
+  for (let k = 4; k < pixels.length; k += 4) {
+    if (pixels[k] !== pixels[0] || pixels[k + 1] !== pixels[1] || pixels[k + 2] !== pixels[2]) {
+      return true;
+    }
+  }
+  return false;
+}
+function selftest() {
+  // the 3-D canvas at two times: drawn, and different
+  show(0);
+  const first = renderer.domElement.toDataURL();
+  show(time.length - 1);
+  const last = renderer.domElement.toDataURL();
+  show(index);
+  const result = {
+    errors,
+    plots: charts.length,
+    plots_drawn: charts.filter((c) => drawn(c.ctx.canvas)).length,
+    portraits: portraits.length,
+    portraits_drawn: portraits.filter((p) => drawn(p.canvas)).length,
+    scene_drawn: drawn(renderer.domElement),
+    scene_moves: first !== last,
+    math: document.querySelectorAll('math').length,
+    actors: actors.length,
+  };
+  document.body.append(element('pre', { id: 'selftest' }, JSON.stringify(result)));
+}
+// after the plots' first drawing (uPlot draws on the next frame)
+if (hash.has('selftest')) requestAnimationFrame(() => setTimeout(selftest, 100));
