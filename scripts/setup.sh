@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian packages unidyn needs. Run as root on Debian 12 (bookworm); running it again
 # is harmless. Usage: scripts/setup.sh [run|test|fuzz|bench|all]   (default all)
-#   run     the `unidyn` command: compilers, CMake, Ninja and the libraries (scripts/run.sh)
+#   run     the `unidyn` command: compilers, CMake, Ninja and the libraries (scripts/run.sh), and
+#           Node.js with npm where there is none (the report's web packages come from the npm
+#           registry at build time)
 #   test    run + GoogleTest, Google Benchmark, the benchmark peers the test build compiles, pdflatex,
-#           SymPy
+#           SymPy, Chromium (the report's browser tests)
 #   fuzz    run + clang with libFuzzer (scripts/fuzz.sh)
 #   bench   test (which has Python with SymPy for the side-by-side runs of bench/run.sh)
 #   all     every one of these and clang-format
@@ -18,7 +20,9 @@ run=(
 # tests and micro benchmarks, the peers of bench/ (compiled with them), pdflatex for the LaTeX
 # documents `derive --standalone` writes, and SymPy to read the JSON `derive` writes
 test=(googletest libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev libsimbody-dev
-  texlive-latex-base python3 python3-sympy)
+  texlive-latex-base python3 python3-sympy chromium)
+# Node.js and npm: Debian's, unless the machine has them already (a newer Node.js, say)
+if ! command -v npm >/dev/null 2>&1; then run+=(nodejs npm); fi
 # fuzzing: clang with libFuzzer
 fuzz=(clang libclang-rt-14-dev)
 

@@ -2,6 +2,7 @@
 #include "model_commands.hpp"
 
 #include "command_model.hpp"
+#include "report_command.hpp"
 #include "simulation_setup.hpp"
 
 #include <fmt/format.h>
@@ -28,6 +29,7 @@
 #include "unidyn/integrate/simulation.hpp"
 #include "unidyn/io/csv.hpp"
 #include "unidyn/io/equation_report.hpp"
+#include "unidyn/io/integrability_text.hpp"
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/io/phase_timings.hpp"
 #include "unidyn/io/textbook_equations.hpp"
@@ -52,24 +54,7 @@ EquationFormat parse_format(const std::string& format) {
 // (1.21), (8.18): which velocity constraints are integrable, alone and together.
 void write_integrability(const System& system, EquationFormat format) {
   const std::string prefix = format == EquationFormat::latex ? "% " : "  ";
-  std::vector<std::size_t> velocity;
-  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
-    if (system.constraints[k].kind != Constraint::Kind::velocity) continue;
-    velocity.push_back(k);
-    const Integrability i = constraint_integrability(system, k);
-    fmt::print("{}constraint {} is {}\n", prefix, system.constraints[k].name,
-               i.integrable ? "integrable (Jacobi (1.21))"
-                            : "not integrable: " + i.witness + " = " + to_text(i.value));
-  }
-  if (velocity.size() < 2) return;
-  try {
-    const Integrability i = set_integrability(system, velocity);
-    fmt::print("{}the velocity constraints together are {}\n", prefix,
-               i.integrable ? "integrable (Frobenius (8.18))"
-                            : "not integrable: " + i.witness + " = " + to_text(i.value));
-  } catch (const std::invalid_argument& e) {
-    fmt::print("{}the velocity constraints together: {}\n", prefix, e.what());
-  }
+  for (const std::string& line : integrability_lines(system)) fmt::print("{}{}\n", prefix, line);
 }
 
 // The model's name as an identifier for exported functions: its file's stem, other characters as _.
@@ -273,15 +258,7 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
   const SimulationStart& start = initial.start;
   const SimulationOptions options = options_for(system, c);
   const auto clock_start = std::chrono::steady_clock::now();
-  CompileOptions compile_options;
-  compile_options.native = c.evaluation == "native";
-  // the cache of native code is keyed by what determines the code in the bytes that were parsed
-  // (not their comments, initial: or simulate:), and how they were reduced
-  compile_options.native_options.key =
-      std::string(c.reduced ? "reduced\n" : "full\n") + model_code_text(model.text, model.path);
-  // the numerics take M and f through partial velocities: the same equations as Lagrange's
-  // (tested on every bundled model), derived faster and with fewer operations
-  const CompiledSystem compiled(system, kane_equations(system), compile_options);
+  const CompiledSystem compiled = command_compiled(c, model, system);
   const double derive_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   // the values given stay; the others come from the constraints (or, with --project, every value
@@ -435,26 +412,34 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
       "The textbook form's coefficients are simplified by one process per core; the environment's "
       "UNIDYN_PROCESSES=N sets how many.");
 
+  // the options of a run, simulate's and report's
+  const auto run_options = [&](CLI::App* command) {
+    command->add_option("model", c.model, "MODEL file or bundled model name")->required();
+    command->add_option("--t-end", c.t_end, "end time")->check(kPositive);
+    command->add_option("--output-step", c.output_step, "time between rows")->check(kPositive);
+    command->add_option("--method", c.integrator, "dopri5 | rk4 | cvode | rattle");
+    command->add_option("--rtol", c.rtol, "relative tolerance (dopri5)")->check(kPositive);
+    command->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
+    command->add_flag("--reduced", c.reduced, "simulate the approach-II equations");
+    command->add_flag("--project", c.project,
+                      "start from every value as given, projected onto the constraints (all "
+                      "values may move) instead of computing the values not given");
+    command
+        ->add_option("--evaluation", c.evaluation,
+                     "native (compiled C++, cached; the tape when no compiler) | tape")
+        ->check(CLI::IsMember({"native", "tape"}))
+        ->capture_default_str();
+  };
   c.simulate = app.add_subcommand("simulate", "Simulate a model: CSV rows and a run summary");
-  c.simulate->add_option("model", c.model, "MODEL file or bundled model name")->required();
+  run_options(c.simulate);
   c.simulate->add_option("-o,--output", c.output, "CSV file (default: standard output)");
-  c.simulate->add_option("--t-end", c.t_end, "end time")->check(kPositive);
-  c.simulate->add_option("--output-step", c.output_step, "time between rows")->check(kPositive);
-  c.simulate->add_option("--method", c.integrator, "dopri5 | rk4 | cvode | rattle");
-  c.simulate->add_option("--rtol", c.rtol, "relative tolerance (dopri5)")->check(kPositive);
-  c.simulate->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
-  c.simulate->add_flag("--reduced", c.reduced, "simulate the approach-II equations");
   c.simulate->add_flag("--poses", c.poses,
                        "add each body's centre and Euler parameters (B.x B.y B.z B.e0 .. B.e3) and "
                        "each particle's position (P.x P.y P.z) to the CSV");
-  c.simulate->add_flag("--project", c.project,
-                       "start from every value as given, projected onto the constraints (all "
-                       "values may move) instead of computing the values not given");
-  c.simulate
-      ->add_option("--evaluation", c.evaluation,
-                   "native (compiled C++, cached; the tape when no compiler) | tape")
-      ->check(CLI::IsMember({"native", "tape"}))
-      ->capture_default_str();
+  c.report = app.add_subcommand(
+      "report", "One offline HTML page of a model and a run: equations, plots, the motion in 3-D");
+  run_options(c.report);
+  c.report->add_option("-o,--output", c.output, "HTML file (default: MODEL's name.html)");
 
   c.check = app.add_subcommand("check", "Newton vs Lagrange agreement, constraint consistency");
   c.check->add_option("model", c.model, "MODEL file or bundled model name")->required();
@@ -468,7 +453,9 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
 
 int run_model_commands(const ModelCommands& c) {
   if (c.models->parsed()) return run_models(c);
-  if (!c.derive->parsed() && !c.simulate->parsed() && !c.check->parsed()) return -1;
+  if (!c.derive->parsed() && !c.simulate->parsed() && !c.check->parsed() && !c.report->parsed()) {
+    return -1;
+  }
   if (c.timings) start_phase_timings();
   const CommandModel model = read_command_model(c.model);
   end_phase("read model");
@@ -479,6 +466,7 @@ int run_model_commands(const ModelCommands& c) {
   try {
     if (c.derive->parsed()) return run_derive(c, model);
     if (c.simulate->parsed()) return run_simulate(c, model);
+    if (c.report->parsed()) return run_report(c, model);
     return run_check(c, model);
   } catch (const ExpressionTooLarge& e) {
     // an expansion of the derivation past its budget: point at the model's largest expression

@@ -12,6 +12,7 @@ struct ModelCommands {
   CLI::App* simulate = nullptr;
   CLI::App* check = nullptr;
   CLI::App* models = nullptr;
+  CLI::App* report = nullptr;
 
   std::string model;
   std::string method = "lagrange";

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "command_model.hpp"
 #include "model_commands.hpp"
 #include "unidyn/integrate/simulation.hpp"
 
@@ -31,6 +32,11 @@ CommandStart command_start(const ModelCommands& c, const System& full, const Sys
 std::vector<std::string> complete_command_start(CommandStart& s, const System& full,
                                                 const System& system,
                                                 const CompiledSystem& compiled);
+
+// The system compiled for a run: native code unless --evaluation tape, cached under the bytes that
+// determine it.
+CompiledSystem command_compiled(const ModelCommands& c, const CommandModel& model,
+                                const System& system);
 
 // The model's simulate: settings with the command line's overrides.
 SimulationOptions options_for(const System& system, const ModelCommands& c);

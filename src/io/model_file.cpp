@@ -82,6 +82,12 @@ System ModelReader::read(const YAML::Node& root) {
   System system;
   system.source = file_;
   system.name = root["name"] ? printable_name(root["name"], "the model's name", false) : file_;
+  if (root["description"]) {
+    system.description = printable_name(root["description"], "the model's description", false);
+  }
+  if (root["reference"]) {
+    system.reference = printable_name(root["reference"], "the model's reference", false);
+  }
   if (root["parameters"]) read_parameters(root["parameters"], system);
   if (!root["coordinates"]) throw ModelError(at(root), "missing 'coordinates:' (a list of names)");
   read_coordinates(root["coordinates"], system);

@@ -29,11 +29,22 @@ import 'uplot/dist/uPlot.min.css';
 import katex from 'katex';
 import './report.css';
 
+// Errors and console errors, for #selftest.
 const errors = [];
 window.addEventListener('error', (e) => errors.push(String(e.message)));
+const consoleError = console.error;
+console.error = (...args) => {
+  errors.push(args.map(String).join(' '));
+  consoleError(...args);
+};
 
 const data = JSON.parse(document.getElementById('unidyn-data').textContent);
 const run = data.run;
+// each column: little-endian 32-bit floats in base64 (report_page.cpp), NaN as a gap
+for (const [name, text] of Object.entries(run.columns)) {
+  const bytes = Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
+  run.columns[name] = Array.from(new Float32Array(bytes.buffer), (v) => (Number.isNaN(v) ? null : v));
+}
 const time = run.columns.t;
 const palette = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f0e', '#9467bd', '#8c564b', '#e377c2',
   '#17becf', '#7f7f7f', '#bcbd22'];
@@ -47,15 +58,18 @@ function element(tag, attributes = {}, ...children) {
 }
 
 const app = document.getElementById('app');
-const section = (title, id) => {
-  const s = element('section', { id }, element('h2', {}, title));
-  app.append(s);
-  return s;
-};
-
-// --- The model: name, reference, parameters, coordinates --------------------------------------
+// The page's sections, in this order: the motion first, the model last.
 app.append(element('h1', {}, data.model.name));
 if (data.model.reference) app.append(element('p', { class: 'reference' }, data.model.reference));
+const sections = {};
+for (const [id, title] of [['motion', 'Motion'], ['run', 'Run'], ['phase', 'Phase portraits'],
+  ['equations', 'Equations of motion'], ['model', 'Model']]) {
+  sections[id] = element('section', { id }, element('h2', {}, title));
+  app.append(sections[id]);
+}
+const section = (title, id) => sections[id];
+
+// --- The model: parameters, coordinates ---------------------------------------------------------
 {
   const s = section('Model', 'model');
   const table = element('table', { class: 'parameters' });
@@ -72,6 +86,7 @@ if (data.model.reference) app.append(element('p', { class: 'reference' }, data.m
 function displayable(tex) {
   return tex
     .replace(/\\label\{[^}]*\}/g, '')
+    .replace(/\\\[|\\\]/g, '')
     .replace(/\\nonumber/g, '')
     .replace(/\\begin\{align\}/g, '\\begin{aligned}')
     .replace(/\\end\{align\}/g, '\\end{aligned}');
@@ -116,6 +131,11 @@ function markers(u) {
   ctx.stroke();
   ctx.restore();
 }
+// An axis tick: 4 significant digits, powers of ten where they are small.
+function tick(v) {
+  if (v === 0) return '0';
+  return Math.abs(v) < 1e-3 || Math.abs(v) >= 1e6 ? v.toExponential(1) : String(+v.toPrecision(4));
+}
 function plot(parent, title, names) {
   const present = names.filter((n) => run.columns[n] !== undefined);
   if (present.length === 0) return;
@@ -126,6 +146,7 @@ function plot(parent, title, names) {
     title, width, height: 260,
     cursor: { sync: { key: sync.key } },
     scales: { x: { time: false } },
+    axes: [{}, { size: 70, values: (u, splits) => splits.map(tick) }],
     series: [{ label: 't' }, ...present.map((n, k) => ({
       label: n, stroke: palette[k % palette.length], width: 1.5,
     }))],
@@ -247,15 +268,36 @@ data.scene.bodies.forEach((b, k) => {
   frame.visible = false;
   group.add(frame);
   scene.add(group);
+  const trail = new Line(new BufferGeometry(),
+    new LineBasicMaterial({ color: palette[(k + 3) % palette.length] }));
+  scene.add(trail);
   const columns = ['x', 'y', 'z', 'e0', 'e1', 'e2', 'e3'].map((c) => run.columns[`${b.name}.${c}`]);
-  actors.push({ kind: 'body', group, frame, columns });
+  actors.push({ kind: 'body', group, frame, trail, columns });
 });
 // the book's frame in three's: a rotation taking (x, y, z) to (x, z, −y)
 const bookToView = new Quaternion().setFromAxisAngle(new Vector3(1, 0, 0), -Math.PI / 2);
 scene.rotation.set(0, 0, 0);
-camera.position.copy(toView(center[0] + 2.2 * size, center[1] - 2.8 * size, center[2] + 1.6 * size));
+// A body that travels far from its size (a rolling disk) is followed by the camera, close enough
+// to see it; otherwise the camera takes in the whole motion.
+const bodySize = Math.max(0, ...data.scene.bodies.map((b) => Math.max(...b.semi_axes)));
+const follow = element('input', { type: 'checkbox' });
+follow.checked = bodySize > 0 && size > 4 * bodySize;
+controls.insertBefore(element('label', {}, follow, ' follow'), clock);
+// from the side and above, 8 body sizes away or 3.9 times the motion's extent
+const distance = (follow.checked ? 8 * bodySize : 3.9 * size) / Math.hypot(2.2, 2.8, 1.6);
+camera.position.copy(toView(center[0] + 2.2 * distance, center[1] - 2.8 * distance,
+  center[2] + 1.6 * distance));
 orbit.target.copy(toView(...center));
 orbit.update();
+// The camera kept at its offset from the first body.
+function followBody() {
+  const body = actors.find((a) => a.kind === 'body');
+  if (!follow.checked || !body) return;
+  const offset = camera.position.clone().sub(orbit.target);
+  orbit.target.copy(body.group.position);
+  camera.position.copy(orbit.target).add(offset);
+  orbit.update();
+}
 
 let index = 0;
 function show(k) {
@@ -263,14 +305,15 @@ function show(k) {
   cursorTime = time[k];
   for (const actor of actors) {
     const v = actor.columns.map((c) => c[k]);
+    // the path so far
+    const points = [];
+    for (let j = 0; j <= k; ++j) {
+      const p = toView(actor.columns[0][j], actor.columns[1][j], actor.columns[2][j]);
+      points.push(p.x, p.y, p.z);
+    }
+    actor.trail.geometry.setAttribute('position', new Float32BufferAttribute(points, 3));
     if (actor.kind === 'particle') {
       actor.mesh.position.copy(toView(v[0], v[1], v[2]));
-      const points = [];
-      for (let j = 0; j <= k; ++j) {
-        const p = toView(actor.columns[0][j], actor.columns[1][j], actor.columns[2][j]);
-        points.push(p.x, p.y, p.z);
-      }
-      actor.trail.geometry.setAttribute('position', new Float32BufferAttribute(points, 3));
     } else {
       actor.group.position.copy(toView(v[0], v[1], v[2]));
       // Q of the body in the book's frame, then the book's frame in three's
@@ -279,6 +322,7 @@ function show(k) {
       actor.frame.visible = frames.checked;
     }
   }
+  followBody();
   slider.value = String(k);
   clock.textContent = `t = ${time[k].toFixed(3)}`;
   for (const c of charts) c.redraw(false, false);
@@ -330,6 +374,8 @@ function frame() {
   requestAnimationFrame(frame);
 }
 show(index);
+// how long the page took to show the motion's first picture (the browser tests print it)
+const readyMilliseconds = performance.now();
 requestAnimationFrame(frame);
 
 // --- #selftest: what the browser tests check ----------------------------------------------------
@@ -355,8 +401,18 @@ function selftest() {
   show(time.length - 1);
   const last = renderer.domElement.toDataURL();
   show(index);
+  // each body's e3 as the view shows it, against Q E3 of its Euler parameters (6.36)
+  let orientationError = 0;
+  for (const actor of actors.filter((a) => a.kind === 'body')) {
+    const [e0, e1, e2, e3] = actor.columns.slice(3).map((c) => c[index]);
+    const book = [2 * (e1 * e3 + e0 * e2), 2 * (e2 * e3 - e0 * e1), e0 * e0 - e1 * e1 - e2 * e2 + e3 * e3];
+    const seen = new Vector3(0, 0, 1).applyQuaternion(actor.group.quaternion);
+    const back = [seen.x, -seen.z, seen.y];  // three's (x, y, z) is the book's (x, z, −y)
+    for (let i = 0; i < 3; ++i) orientationError = Math.max(orientationError, Math.abs(back[i] - book[i]));
+  }
   const result = {
     errors,
+    orientation_error: orientationError,
     plots: charts.length,
     plots_drawn: charts.filter((c) => drawn(c.ctx.canvas)).length,
     portraits: portraits.length,
@@ -365,6 +421,7 @@ function selftest() {
     scene_moves: first !== last,
     math: document.querySelectorAll('math').length,
     actors: actors.length,
+    ready_ms: Math.round(readyMilliseconds),
   };
   document.body.append(element('pre', { id: 'selftest' }, JSON.stringify(result)));
 }

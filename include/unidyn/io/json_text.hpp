@@ -9,12 +9,23 @@
 
 namespace unidyn {
 
-// A JSON string literal (names and expressions are printable text: model_checks refuses others).
+// A JSON string literal: quotes and backslashes escaped, control characters (a summary's line
+// breaks) as \n, \t or \u00XX.
 inline std::string quoted(const std::string& s) {
   std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
+  for (const char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      out += fmt::format("\\u{:04x}", static_cast<unsigned>(static_cast<unsigned char>(c)));
+    } else {
+      out += c;
+    }
   }
   return out + "\"";
 }

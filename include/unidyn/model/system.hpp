@@ -177,6 +177,8 @@ struct InitialOmega {
 struct System {
   std::string name;
   std::string source;  // the model file
+  // The model file's `description:` and `reference:` (where in the book), as written.
+  std::string description, reference;
   Configuration configuration;
   std::vector<Parameter> parameters;
   std::vector<Particle> particles;

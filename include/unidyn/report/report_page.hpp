@@ -1,0 +1,39 @@
+// `unidyn report`: one self-contained HTML page of a model and a run of it — the model and its
+// equations of motion in the book's form (rendered as MathML), whether Newton–Euler and Lagrange
+// agree and which velocity constraints are integrable; plots of the run (coordinates, rates,
+// energy and its error, multipliers, outputs, conserved quantities) with its events marked;
+// phase portraits; and the motion in 3-D (particles as spheres, bodies as their ellipsoids of
+// inertia, numeric/poses.hpp). The page's script and style are embedded (report/web_assets.hpp),
+// its data is one JSON object in it: it opens from a file, with no network and no server.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "unidyn/equations/lagrange.hpp"
+#include "unidyn/report/web_assets.hpp"
+
+namespace unidyn {
+
+// A run of the model: its rows with their columns (the simulation's, then the poses'), the
+// summary printed for it, and its phases and events (t, what).
+struct ReportRun {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  std::string summary;
+  std::vector<std::pair<double, std::string>> events;
+};
+
+// What the page says of the model beyond its equations: the Newton–Euler check in words.
+struct ReportModel {
+  const System& system;
+  const EquationsOfMotion& equations;
+  std::vector<double> parameters;
+  std::string check;
+};
+
+// The page. Equal input gives the same bytes.
+std::string report_page(const ReportModel& model, const ReportRun& run, const WebAssets& assets);
+
+}  // namespace unidyn

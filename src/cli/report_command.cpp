@@ -1,0 +1,82 @@
+// The report command: a run with poses, the check, the page.
+#include "report_command.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "simulation_setup.hpp"
+#include "unidyn/equations/equivalence.hpp"
+#include "unidyn/equations/newton.hpp"
+#include "unidyn/numeric/poses.hpp"
+#include "unidyn/report/report_page.hpp"
+#include "unidyn/symbolic/printable_text.hpp"
+
+namespace unidyn::cli {
+namespace {
+
+// Newton–Euler against Lagrange (`unidyn check`'s first part), in one sentence.
+std::string check_text(const System& system, const EquationsOfMotion& lagrange) {
+  const EquivalenceReport report = check_equivalence(system, lagrange, newton_equations(system));
+  return fmt::format(
+      "Newton-Euler (Newton's law projected onto the partial velocities) and Lagrange's equations: "
+      "the residuals simplify to 0: {}; at {} random states the largest relative residual is "
+      "{:.3g}",
+      report.symbolic_zero ? "yes" : "NO", report.states, report.numeric_relative_residual);
+}
+
+}  // namespace
+
+int run_report(const ModelCommands& c, const CommandModel& model) {
+  const std::optional<WebAssets> assets = web_assets();
+  if (!assets) {
+    throw std::runtime_error(
+        "this unidyn was built without the report's web assets (npm was not found when it was "
+        "built): install Node.js and npm (scripts/setup.sh) and build it again");
+  }
+  const System system = command_system(c, model.system);
+  CommandStart initial = command_start(c, model.system, system);
+  const SimulationOptions options = options_for(system, c);
+  const std::string path =
+      c.output.empty() ? std::filesystem::path(model.path).stem().string() + ".html" : c.output;
+  std::ofstream file(path, std::ios::binary);
+  if (!file) throw std::invalid_argument("cannot write " + printable(path));
+
+  // the run, with every body's and particle's pose
+  const CompiledSystem compiled = command_compiled(c, model, system);
+  if (!c.project) complete_command_start(initial, model.system, system, compiled);
+  const SimulationStart& start = initial.start;
+  Poses poses(system);
+  ReportRun run;
+  run.columns = simulation_columns(system);
+  run.columns.insert(run.columns.end(), poses.columns().begin(), poses.columns().end());
+  const auto n = static_cast<Eigen::Index>(system.coordinates().size());
+  const SimulationSummary s =
+      simulate(system, compiled, start, options, [&](const std::vector<double>& row) {
+        run.rows.push_back(row);
+        poses.append(row[0], Eigen::Map<const Eigen::VectorXd>(row.data() + 1, n), start.parameters,
+                     run.rows.back());
+      });
+  run.summary = fmt::format(
+      "{}: {} from t = 0 to {} ({}), {} rows\n", system.name,
+      s.ok ? (s.stopped ? "simulated until stop_when" : "simulated")
+           : "FAILED at t = " + fmt::format("{:.10g}", s.failure_time) + ": " + s.message,
+      options.t_end, options.method, s.rows);
+  if (s.rows > 0) run.summary += run_figures(system, s);
+  for (const auto& phase : s.phases) run.events.emplace_back(phase.t, phase.what);
+
+  // the equations and their check
+  const EquationsOfMotion lagrange = lagrange_equations(system);
+  const ReportModel report{system, lagrange, start.parameters, check_text(system, lagrange)};
+  const std::string page = report_page(report, run, *assets);
+  file << page;
+  file.close();
+  if (!file) throw std::runtime_error("cannot write " + printable(path));
+  fmt::print("report of {} written to {} ({:.0f} kB): {} rows{}\n", system.name, printable(path),
+             static_cast<double>(page.size()) / 1024.0, s.rows,
+             s.ok ? "" : ", the run FAILED: " + printable(s.message));
+  return s.ok ? 0 : 1;
+}
+
+}  // namespace unidyn::cli

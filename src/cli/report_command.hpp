@@ -1,0 +1,14 @@
+// `unidyn report MODEL [-o FILE.html]`: simulate as `simulate` does and write the report's page
+// (report/report_page.hpp).
+#pragma once
+
+#include "command_model.hpp"
+#include "model_commands.hpp"
+
+namespace unidyn::cli {
+
+// 0 when the run succeeded, 1 when it failed (the page shows the rows computed and why it
+// stopped) or the build has no web assets; bad input throws std::invalid_argument.
+int run_report(const ModelCommands& c, const CommandModel& model);
+
+}  // namespace unidyn::cli

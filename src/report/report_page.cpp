@@ -1,0 +1,286 @@
+// The report's page: its data as JSON, and the HTML around it.
+#include "unidyn/report/report_page.hpp"
+
+#include <fmt/format.h>
+
+#include <openssl/evp.h>
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+
+#include "unidyn/io/equation_report.hpp"
+#include "unidyn/io/integrability_text.hpp"
+#include "unidyn/io/json_text.hpp"
+#include "unidyn/io/textbook_equations.hpp"
+#include "unidyn/symbolic/real_value.hpp"
+
+namespace unidyn {
+namespace {
+
+// The most LaTeX the page renders (KaTeX, when it opens).
+constexpr std::size_t kMostEquationBytes = 100'000;
+
+// A number for the page's plots: nine significant digits (the CSV keeps every bit); null when not
+// finite.
+std::string number(double x) {
+  return std::isfinite(x) ? fmt::format("{:.9g}", x) : std::string("null");
+}
+
+// Numbers as 32-bit floats, little-endian, in base64 (RFC 4648).
+std::string float32_base64(const std::vector<double>& values) {
+  std::vector<unsigned char> bytes;
+  bytes.reserve(4 * values.size());
+  for (const double v : values) {
+    const auto bits = std::bit_cast<std::uint32_t>(static_cast<float>(v));
+    for (int k = 0; k < 4; ++k) bytes.push_back(static_cast<unsigned char>(bits >> (8 * k)));
+  }
+  std::string text(4 * ((bytes.size() + 2) / 3) + 1, '\0');
+  const int length = EVP_EncodeBlock(reinterpret_cast<unsigned char*>(text.data()), bytes.data(),
+                                     static_cast<int>(bytes.size()));
+  text.resize(static_cast<std::size_t>(length));
+  return text;
+}
+
+template <class Items, class Each>
+std::string json_array(const Items& items, Each each) {
+  std::string out = "[";
+  bool first = true;
+  for (const auto& item : items) {
+    out += (first ? "" : ", ") + each(item);
+    first = false;
+  }
+  return out + "]";
+}
+
+std::string json_names(const std::vector<std::string>& names) {
+  return json_array(names, [](const std::string& s) { return unidyn::quoted(s); });
+}
+
+// The model: name, reference, parameters and their values, coordinates.
+std::string model_json(const ReportModel& model) {
+  const System& system = model.system;
+  std::vector<std::string> parameters, coordinates;
+  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
+    parameters.push_back("[" + unidyn::quoted(system.parameters[k].name) + ", " +
+                         json_number(model.parameters[k]) + "]");
+  }
+  for (const auto& q : system.coordinates()) coordinates.push_back(q.name);
+  return "{\"name\": " + unidyn::quoted(system.name) +
+         ", \"reference\": " + unidyn::quoted(system.reference) + ", \"parameters\": [" +
+         fmt::format("{}", fmt::join(parameters, ", ")) +
+         "], \"coordinates\": " + json_names(coordinates) + "}";
+}
+
+// Lagrange's equations in the book's form, in LaTeX (as `derive --format latex` writes them), their
+// caption and the integrability of the velocity constraints as notes, and the Newton–Euler check.
+std::string equations_json(const ReportModel& model) {
+  std::ostringstream latex;
+  write_textbook_lagrange(latex, model.system, model.equations, EquationFormat::latex);
+  std::string block;
+  std::vector<std::string> notes;
+  std::istringstream lines(latex.str());
+  for (std::string line; std::getline(lines, line);) {
+    if (line.starts_with("% ")) {
+      notes.push_back(line.substr(2));
+    } else {
+      block += line + "\n";
+    }
+  }
+  for (std::string& line : integrability_lines(model.system)) notes.push_back(std::move(line));
+  // equations too long to read on a page (the bicycle's: 0.9 MB of LaTeX) are named, not shown
+  if (block.size() > kMostEquationBytes) {
+    notes.insert(notes.begin(),
+                 fmt::format("the equations are {:.0f} kB of LaTeX, more than a page can show: "
+                             "`unidyn derive MODEL --format latex` writes them",
+                             static_cast<double>(block.size()) / 1024.0));
+    block.clear();
+  }
+  return "{\"latex\": [" + (block.empty() ? std::string() : unidyn::quoted(block)) +
+         "], \"notes\": " + json_names(notes) + ", \"check\": " + unidyn::quoted(model.check) + "}";
+}
+
+// The plots: coordinates, rates, energy (and its change), multipliers, outputs and conserved
+// quantities, each group of the columns there are.
+std::string groups_json(const System& system, const std::vector<std::string>& columns) {
+  const auto has = [&](const std::string& name) {
+    return std::find(columns.begin(), columns.end(), name) != columns.end();
+  };
+  std::vector<std::pair<std::string, std::vector<std::string>>> groups{
+      {"coordinates", {}},         {"rates", {}},       {"energy", {}},
+      {"energy - E(0)", {}},       {"multipliers", {}}, {"outputs", {}},
+      {"conserved quantities", {}}};
+  for (const auto& q : system.coordinates()) {
+    groups[0].second.push_back(q.name);
+    groups[1].second.push_back("der(" + q.name + ")");
+  }
+  if (has("energy")) {
+    groups[2].second.push_back("energy");
+    groups[3].second.push_back("energy - E(0)");
+  }
+  for (const auto& c : system.constraints) groups[4].second.push_back("lambda(" + c.name + ")");
+  for (const auto& o : system.outputs) groups[5].second.push_back(o.name);
+  for (const auto& o : system.conserved) groups[6].second.push_back(o.name);
+  std::string out = "[";
+  bool first = true;
+  for (const auto& [title, names] : groups) {
+    if (names.empty()) continue;
+    out += (first ? "" : ", ") + std::string("{\"title\": ") + unidyn::quoted(title) +
+           ", \"columns\": " + json_names(names) + "}";
+    first = false;
+  }
+  return out + "]";
+}
+
+// The run column by column (with E − E(0) after the energy), its summary and events.
+std::string run_json(const System& system, const ReportRun& run) {
+  std::vector<std::string> columns = run.columns;
+  std::vector<std::vector<double>> values(columns.size());
+  for (const auto& row : run.rows) {
+    for (std::size_t c = 0; c < columns.size(); ++c) values[c].push_back(row[c]);
+  }
+  const auto energy = std::find(columns.begin(), columns.end(), "energy");
+  if (energy != columns.end() && !run.rows.empty()) {
+    const auto& E = values[static_cast<std::size_t>(energy - columns.begin())];
+    std::vector<double> change;
+    for (const double e : E) change.push_back(e - E.front());
+    columns.push_back("energy - E(0)");
+    values.push_back(std::move(change));
+  }
+  // each column as little-endian 32-bit floats in base64: 7 digits, a third of the text
+  std::string out = "{\"columns\": {";
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    out += (c ? ", " : "") + unidyn::quoted(columns[c]) + ": \"" + float32_base64(values[c]) + "\"";
+  }
+  out += "}, \"summary\": " + unidyn::quoted(run.summary) + ", \"events\": " +
+         json_array(run.events,
+                    [](const std::pair<double, std::string>& e) {
+                      return "{\"t\": " + number(e.first) +
+                             ", \"what\": " + unidyn::quoted(e.second) + "}";
+                    }) +
+         ", \"groups\": " + groups_json(system, columns) + "}";
+  return out;
+}
+
+// The 3-D scene: each body's ellipsoid of inertia (the uniform ellipsoid with its mass and
+// principal moments: a² = 5 (B + C − A)/(2m) and cyclically, along its principal axes in the body
+// basis), each particle's sphere, and the box the motion stays in.
+std::string scene_json(const ReportModel& model, const ReportRun& run) {
+  const System& system = model.system;
+  GiNaC::exmap values;
+  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
+    values[system.parameters[k].symbol] = model.parameters[k];
+  }
+  // the box the centres and particles stay in
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(run.columns.begin(), run.columns.end(), name) -
+                                    run.columns.begin());
+  };
+  std::vector<std::string> moving;
+  for (const Body& b : system.bodies) moving.push_back(b.name);
+  for (const Particle& p : system.particles) moving.push_back(p.name);
+  for (const std::string& name : moving) {
+    const std::size_t x = column(name + ".x");
+    if (x + 2 >= run.columns.size()) continue;
+    for (const auto& row : run.rows) {
+      const Eigen::Vector3d r(row[x], row[x + 1], row[x + 2]);
+      if (!r.allFinite()) continue;
+      low = low.cwiseMin(r);
+      high = high.cwiseMax(r);
+    }
+  }
+  if (!low.allFinite()) low = high = Eigen::Vector3d::Zero();
+  std::vector<std::string> bodies;
+  double largest = 0.0;
+  for (const Body& b : system.bodies) {
+    const double m = real_value(b.mass, values).value_or(0.0);
+    Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+    for (unsigned i = 0; i < 3; ++i) {
+      for (unsigned k = 0; k < 3; ++k) {
+        J(i, k) = real_value(b.inertia(i, k), values).value_or(0.0);
+      }
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(0.5 * (J + J.transpose()));
+    const Eigen::Vector3d I = principal.eigenvalues();
+    Eigen::Vector3d axes;
+    for (int i = 0; i < 3; ++i) {
+      const double square = m > 0 ? 5.0 * (I.sum() - 2 * I[i]) / (2 * m) : 0.0;
+      axes[i] = std::sqrt(std::max(square, 0.0));
+    }
+    // no thinner than a twentieth of its largest axis (a thin disk's is 0)
+    axes = axes.cwiseMax(0.05 * axes.maxCoeff());
+    largest = std::max(largest, axes.maxCoeff());
+    const Eigen::Matrix3d& V = principal.eigenvectors();
+    bodies.push_back(
+        "{\"name\": " + unidyn::quoted(b.name) + ", \"semi_axes\": [" + number(axes[0]) + ", " +
+        number(axes[1]) + ", " + number(axes[2]) + "], \"principal_axes\": [" +
+        fmt::format("[{}, {}, {}], [{}, {}, {}], [{}, {}, {}]", number(V(0, 0)), number(V(0, 1)),
+                    number(V(0, 2)), number(V(1, 0)), number(V(1, 1)), number(V(1, 2)),
+                    number(V(2, 0)), number(V(2, 1)), number(V(2, 2))) +
+        "]}");
+  }
+  const Eigen::Vector3d center = 0.5 * (low + high);
+  const double extent = std::max({0.5 * (high - low).norm(), 2 * largest, 1e-3});
+  std::vector<std::string> particles;
+  for (const Particle& p : system.particles) {
+    particles.push_back("{\"name\": " + unidyn::quoted(p.name) +
+                        ", \"radius\": " + number(0.04 * extent) + "}");
+  }
+  return fmt::format(
+      "{{\"extent\": {}, \"center\": [{}, {}, {}], \"bodies\": [{}], \"particles\": [{}]}}",
+      number(extent), number(center[0]), number(center[1]), number(center[2]),
+      fmt::join(bodies, ", "), fmt::join(particles, ", "));
+}
+
+// s with every "</" of a closing tag inside a <script> written "<\/" (the same text to JSON and
+// JavaScript strings).
+std::string script_safe(std::string_view s) {
+  std::string out;
+  out.reserve(s.size());
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    if (s[k] == '<' && k + 1 < s.size() && s[k + 1] == '/') {
+      out += "<\\";
+    } else {
+      out += s[k];
+    }
+  }
+  return out;
+}
+
+// Text for HTML: &, < and > escaped.
+std::string html_text(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    if (c == '&') {
+      out += "&amp;";
+    } else if (c == '<') {
+      out += "&lt;";
+    } else if (c == '>') {
+      out += "&gt;";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string report_page(const ReportModel& model, const ReportRun& run, const WebAssets& assets) {
+  const std::string data = "{\"model\": " + model_json(model) +
+                           ",\n\"equations\": " + equations_json(model) +
+                           ",\n\"run\": " + run_json(model.system, run) +
+                           ",\n\"scene\": " + scene_json(model, run) + "}";
+  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+         "<meta name=\"generator\" content=\"unidyn report\">\n<title>" +
+         html_text(model.system.name) + " - unidyn report</title>\n<style>\n" +
+         std::string(assets.style) + "\n</style>\n</head>\n<body>\n<div id=\"app\"></div>\n" +
+         "<script type=\"application/json\" id=\"unidyn-data\">\n" + script_safe(data) +
+         "\n</script>\n<script>\n" + script_safe(assets.script) + "\n</script>\n</body>\n</html>\n";
+}
+
+}  // namespace unidyn

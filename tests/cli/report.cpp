@@ -1,0 +1,124 @@
+// `unidyn report` opened in a real browser (Debian's headless Chromium): for a particle model, the
+// heavy top and the rolling disk the page checks itself (#selftest: no errors, every plot and phase
+// portrait drawn, the 3-D view drawn and different at the run's first and last instants, each
+// body turned as its Euler parameters say, the equations rendered as MathML), and two screenshots
+// at two instants differ; the screenshots are
+// kept in build/tests/artefacts. A 10 s run of a bundled model makes a page under 2 MB.
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include "cli/cli_support.hpp"
+
+namespace unidyn::cli_test {
+namespace {
+
+// A command's standard output (through the shell), and whether it exited with 0.
+std::pair<bool, std::string> shell(const std::string& command) {
+  const std::string out = temp_path("shell.txt");
+  const int status = std::system((command + " >'" + out + "' 2>/dev/null").c_str());
+  std::string text = read_file(out);
+  std::remove(out.c_str());
+  return {status == 0, text};
+}
+
+// Headless Chromium as the machine runs it here: no sandbox (root), no network of its own, a
+// fresh profile, WebGL in software.
+std::string chromium(const std::string& profile) {
+  return "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic "
+         "--no-first-run --disable-background-networking --disable-component-update "
+         "--disable-sync --enable-unsafe-swiftshader --virtual-time-budget=4000 "
+         "--window-size=1000,1400 --user-data-dir='" +
+         profile + "'";
+}
+
+// The number after "name": in the self-test's JSON (−1 when it is not there).
+double value(const std::string& json, const std::string& name) {
+  const std::size_t at = json.find("\"" + name + "\":");
+  return at == std::string::npos ? -1 : std::stod(json.substr(at + name.size() + 3));
+}
+int count(const std::string& json, const std::string& name) {
+  return static_cast<int>(value(json, name));
+}
+
+class Report : public testing::TestWithParam<std::string> {};
+
+TEST_P(Report, DrawsItselfInChromium) {
+  ASSERT_TRUE(shell("command -v chromium").first)
+      << "chromium is not installed: scripts/setup.sh test installs it";
+  const std::string model = GetParam();
+  const std::string page = temp_path(model + ".html");
+  const Outcome made = run("report " + model + " --t-end 2 -o '" + page + "'");
+  ASSERT_EQ(made.status, 0) << made.out << made.err;
+  EXPECT_TRUE(contains(made.out, "written to " + page)) << made.out;
+  const std::string profile = temp_path("chromium-profile");
+
+  const auto [loaded, dom] =
+      shell(chromium(profile) + " --dump-dom 'file://" + page + "#selftest'");
+  ASSERT_TRUE(loaded) << dom;
+  const std::size_t at = dom.find("<pre id=\"selftest\">");
+  ASSERT_NE(at, std::string::npos) << "the page did not finish its self-test";
+  const std::string result = dom.substr(at, dom.find("</pre>", at) - at);
+  EXPECT_TRUE(contains(result, "\"errors\":[]")) << result;
+  EXPECT_GT(count(result, "plots"), 0) << result;
+  EXPECT_EQ(count(result, "plots_drawn"), count(result, "plots")) << result;
+  EXPECT_GT(count(result, "portraits"), 0) << result;
+  EXPECT_EQ(count(result, "portraits_drawn"), count(result, "portraits")) << result;
+  EXPECT_TRUE(contains(result, "\"scene_drawn\":true")) << result;
+  EXPECT_TRUE(contains(result, "\"scene_moves\":true")) << result;
+  EXPECT_GE(count(result, "math"), 1) << result;
+  EXPECT_GE(count(result, "actors"), 1) << result;
+  // each body turned as its Euler parameters say (to float precision: the page's data is float32)
+  EXPECT_GE(value(result, "orientation_error"), 0.0) << result;
+  EXPECT_LT(value(result, "orientation_error"), 1e-5) << result;
+  // shown within a second (the test prints how long it took)
+  std::cout << model << ": the first picture after " << value(result, "ready_ms") << " ms\n";
+
+  // two instants, two different pictures, kept as artefacts
+  std::filesystem::create_directories("artefacts");
+  std::string shots[2];
+  const char* instants[2] = {"0.3", "1.7"};
+  for (int k = 0; k < 2; ++k) {
+    const std::string png = "artefacts/report-" + model + "-t" + instants[k] + ".png";
+    ASSERT_TRUE(shell(chromium(profile) + " --screenshot='" + png + "' 'file://" + page +
+                      "#t=" + instants[k] + "'")
+                    .first);
+    shots[k] = read_file(png);
+    EXPECT_GT(shots[k].size(), 10000u) << png;
+  }
+  EXPECT_NE(shots[0], shots[1]);
+  std::filesystem::remove_all(profile);
+  std::remove(page.c_str());
+}
+
+INSTANTIATE_TEST_SUITE_P(Bundled, Report,
+                         testing::Values("spherical-pendulum", "heavy-top", "rolling-disk"),
+                         [](const auto& parameter) {
+                           std::string name = parameter.param;
+                           for (char& c : name) c = c == '-' ? '_' : c;
+                           return name;
+                         });
+
+// The size a user gets for a 10 s run (the bicycle: four bodies, 1001 rows).
+TEST(Report, TenSecondsUnderTwoMegabytes) {
+  const std::string page = temp_path("bicycle.html");
+  const Outcome made = run("report bicycle --t-end 10 -o '" + page + "'");
+  ASSERT_EQ(made.status, 0) << made.out << made.err;
+  EXPECT_LT(std::filesystem::file_size(page), 2'000'000u);
+  std::remove(page.c_str());
+}
+
+// Equal input, the same bytes.
+TEST(Report, SamePageOnEveryRun) {
+  const std::string first = temp_path("first.html"), again = temp_path("again.html");
+  ASSERT_EQ(run("report double-pendulum --t-end 1 -o '" + first + "'").status, 0);
+  ASSERT_EQ(
+      run("report double-pendulum --t-end 1 -o '" + again + "'", "UNIDYN_RANDOM_LAYOUT=1").status,
+      0);
+  EXPECT_EQ(read_file(first), read_file(again));
+  std::remove(first.c_str());
+  std::remove(again.c_str());
+}
+
+}  // namespace
+}  // namespace unidyn::cli_test
