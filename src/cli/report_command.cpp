@@ -3,12 +3,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
 #include "simulation_setup.hpp"
 #include "unidyn/equations/equivalence.hpp"
 #include "unidyn/equations/newton.hpp"
+#include "unidyn/numeric/constraint_forces.hpp"
 #include "unidyn/numeric/poses.hpp"
 #include "unidyn/report/report_page.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
@@ -48,15 +50,27 @@ int run_report(const ModelCommands& c, const CommandModel& model) {
   if (!c.project) complete_command_start(initial, model.system, system, compiled);
   const SimulationStart& start = initial.start;
   Poses poses(system);
+  ConstraintForces forces(system);
   ReportRun run;
   run.columns = simulation_columns(system);
+  // where the multipliers are in a row
+  const auto lambda_at = static_cast<std::size_t>(
+      std::find(run.columns.begin(), run.columns.end(),
+                system.constraints.empty() ? "" : "lambda(" + system.constraints[0].name + ")") -
+      run.columns.begin());
   run.columns.insert(run.columns.end(), poses.columns().begin(), poses.columns().end());
+  run.columns.insert(run.columns.end(), forces.columns().begin(), forces.columns().end());
+  run.force_owners = forces.owners();
   const auto n = static_cast<Eigen::Index>(system.coordinates().size());
+  const auto m = static_cast<Eigen::Index>(system.constraints.size());
   const SimulationSummary s =
       simulate(system, compiled, start, options, [&](const std::vector<double>& row) {
         run.rows.push_back(row);
-        poses.append(row[0], Eigen::Map<const Eigen::VectorXd>(row.data() + 1, n), start.parameters,
-                     run.rows.back());
+        const Eigen::Map<const Eigen::VectorXd> q(row.data() + 1, n), qdot(row.data() + 1 + n, n);
+        poses.append(row[0], q, start.parameters, run.rows.back());
+        if (forces.columns().empty()) return;
+        const Eigen::Map<const Eigen::VectorXd> lambda(row.data() + lambda_at, m);
+        forces.append(row[0], q, qdot, lambda, start.parameters, run.rows.back());
       });
   run.summary = fmt::format(
       "{}: {} from t = 0 to {} ({}), {} rows\n", system.name,
@@ -64,6 +78,9 @@ int run_report(const ModelCommands& c, const CommandModel& model) {
            : "FAILED at t = " + fmt::format("{:.10g}", s.failure_time) + ": " + s.message,
       options.t_end, options.method, s.rows);
   if (s.rows > 0) run.summary += run_figures(system, s);
+  if (!forces.unavailable().empty()) {
+    run.summary += "  constraint forces not drawn: " + forces.unavailable() + "\n";
+  }
   for (const auto& phase : s.phases) run.events.emplace_back(phase.t, phase.what);
 
   // the equations and their check

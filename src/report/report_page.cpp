@@ -103,9 +103,10 @@ std::string equations_json(const ReportModel& model) {
          "], \"notes\": " + json_names(notes) + ", \"check\": " + unidyn::quoted(model.check) + "}";
 }
 
-// The plots: coordinates, rates, energy (and its change), multipliers, outputs and conserved
-// quantities, each group of the columns there are.
-std::string groups_json(const System& system, const std::vector<std::string>& columns) {
+// The plots: coordinates, rates, energy (and its change), multipliers, outputs, conserved
+// quantities and each constraint force, each group of the columns there are.
+std::string groups_json(const System& system, const std::vector<std::string>& columns,
+                        const std::vector<std::string>& force_owners) {
   const auto has = [&](const std::string& name) {
     return std::find(columns.begin(), columns.end(), name) != columns.end();
   };
@@ -124,6 +125,10 @@ std::string groups_json(const System& system, const std::vector<std::string>& co
   for (const auto& c : system.constraints) groups[4].second.push_back("lambda(" + c.name + ")");
   for (const auto& o : system.outputs) groups[5].second.push_back(o.name);
   for (const auto& o : system.conserved) groups[6].second.push_back(o.name);
+  for (const auto& owner : force_owners) {
+    groups.push_back(
+        {"constraint force on " + owner, {owner + ".Fc.x", owner + ".Fc.y", owner + ".Fc.z"}});
+  }
   std::string out = "[";
   bool first = true;
   for (const auto& [title, names] : groups) {
@@ -161,7 +166,7 @@ std::string run_json(const System& system, const ReportRun& run) {
                       return "{\"t\": " + number(e.first) +
                              ", \"what\": " + unidyn::quoted(e.second) + "}";
                     }) +
-         ", \"groups\": " + groups_json(system, columns) + "}";
+         ", \"groups\": " + groups_json(system, columns, run.force_owners) + "}";
   return out;
 }
 
@@ -231,9 +236,10 @@ std::string scene_json(const ReportModel& model, const ReportRun& run) {
                         ", \"radius\": " + number(0.04 * extent) + "}");
   }
   return fmt::format(
-      "{{\"extent\": {}, \"center\": [{}, {}, {}], \"bodies\": [{}], \"particles\": [{}]}}",
-      number(extent), number(center[0]), number(center[1]), number(center[2]),
-      fmt::join(bodies, ", "), fmt::join(particles, ", "));
+      "{{\"extent\": {}, \"center\": [{}, {}, {}], \"lowest\": {}, \"bodies\": [{}], "
+      "\"particles\": [{}], \"forces\": {}}}",
+      number(extent), number(center[0]), number(center[1]), number(center[2]), number(low[2]),
+      fmt::join(bodies, ", "), fmt::join(particles, ", "), json_names(run.force_owners));
 }
 
 // s with every "</" of a closing tag inside a <script> written "<\/" (the same text to JSON and

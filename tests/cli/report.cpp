@@ -68,6 +68,8 @@ TEST_P(Report, DrawsItselfInChromium) {
   EXPECT_TRUE(contains(result, "\"scene_moves\":true")) << result;
   EXPECT_GE(count(result, "math"), 1) << result;
   EXPECT_GE(count(result, "actors"), 1) << result;
+  // the rolling disk's constraint force as an arrow (the others have no constraints)
+  EXPECT_EQ(count(result, "arrows"), model == "rolling-disk" ? 1 : 0) << result;
   // each body turned as its Euler parameters say (to float precision: the page's data is float32)
   EXPECT_GE(value(result, "orientation_error"), 0.0) << result;
   EXPECT_LT(value(result, "orientation_error"), 1e-5) << result;

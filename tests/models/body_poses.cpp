@@ -1,6 +1,8 @@
 // The poses along a run (numeric/poses.hpp), against the rotation layer: the heavy top's Euler
 // parameters give the rotation tensor of its 3-1-3 angles (6.20), its centre is l e3, and the
 // parameters keep a continuous sign; the double pendulum's particles are where its positions say.
+// The constraint forces (numeric/constraint_forces.hpp) against Newton's law for the pendulum.
+#include "unidyn/numeric/constraint_forces.hpp"
 #include "unidyn/numeric/poses.hpp"
 
 #include <cmath>
@@ -56,6 +58,26 @@ TEST(BodyPoses, DoublePendulumsParticles) {
     EXPECT_NEAR(pose[3], std::sin(a) + std::sin(b), 1e-15);
     EXPECT_NEAR(pose[4], -std::cos(a) - std::cos(b), 1e-15);
     EXPECT_EQ(pose[5], 0.0);
+  }
+}
+
+// The rod's force on the bob, λ ∇Ψ from the run's multiplier, is what Newton's law asks of it:
+// m a = −m g E3 + F_c with a · r̂ = −|v|²/L on the sphere, so F_c is radial with
+// F_c · r̂ = −m |v|²/L + m g E3 · r̂ (m = 1, g = 9.81, L = 1).
+TEST(BodyPoses, PendulumRodForceIsNewtons) {
+  const test::ModelRun run = test::run_model("spherical-pendulum-cartesian", {},
+                                             [](SimulationOptions& o) { o.t_end = 2; });
+  ConstraintForces forces(run.system);
+  ASSERT_EQ(forces.columns(), (std::vector<std::string>{"P.Fc.x", "P.Fc.y", "P.Fc.z"}));
+  for (std::size_t r = 0; r < run.rows.size(); r += 7) {
+    const Eigen::Vector3d x(run.at(r, "x"), run.at(r, "y"), run.at(r, "z")),
+        v(run.at(r, "der(x)"), run.at(r, "der(y)"), run.at(r, "der(z)"));
+    std::vector<double> F;
+    forces.append(run.at(r, "t"), x, v, Eigen::VectorXd::Constant(1, run.at(r, "lambda(rod)")),
+                  {1.0, 9.81, 1.0, 2.0, 0.0, 0.0, 2.5}, F);
+    const Eigen::Vector3d Fc(F[0], F[1], F[2]), radial = x.normalized();
+    EXPECT_NEAR(Fc.dot(radial), -v.squaredNorm() + 9.81 * radial.z(), 1e-8) << r;
+    EXPECT_LT((Fc - Fc.dot(radial) * radial).norm(), 1e-10) << r;
   }
 }
 

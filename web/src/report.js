@@ -4,6 +4,7 @@
 // <pre id="selftest"> (the browser tests read it); with #t=T it shows the run paused at time T.
 import {
   AmbientLight,
+  ArrowHelper,
   AxesHelper,
   BufferGeometry,
   Color,
@@ -214,8 +215,11 @@ for (const v of ['0.25', '0.5', '1', '2', '4']) {
   speed.append(o);
 }
 const frames = element('input', { type: 'checkbox' });
+const forcesShown = element('input', { type: 'checkbox' });
+forcesShown.checked = true;
 const clock = element('span', { class: 'clock' }, 't = 0');
-controls.append(play, slider, speed, element('label', {}, frames, ' body frames'), clock);
+controls.append(play, slider, speed, element('label', {}, frames, ' body frames'),
+  element('label', {}, forcesShown, ' constraint forces'), clock);
 scene3d.append(controls);
 const view = element('div', { class: 'view' });
 scene3d.append(view);
@@ -237,7 +241,8 @@ const toView = (x, y, z) => new Vector3(x, z, -y);
 const { extent, center } = data.scene;
 const size = Math.max(extent, 1e-3);
 const grid = new GridHelper(4 * size, 20, 0x999999, 0xcccccc);
-grid.position.copy(toView(center[0], center[1], 0));
+// the floor: z = 0, or below the lowest point of the motion (a hanging pendulum)
+grid.position.copy(toView(center[0], center[1], Math.min(0, data.scene.lowest)));
 scene.add(grid);
 const axes = new AxesHelper(0.5 * size);
 scene.add(axes);
@@ -274,6 +279,21 @@ data.scene.bodies.forEach((b, k) => {
   const columns = ['x', 'y', 'z', 'e0', 'e1', 'e2', 'e3'].map((c) => run.columns[`${b.name}.${c}`]);
   actors.push({ kind: 'body', group, frame, trail, columns });
 });
+// The constraint forces as arrows from the particle or body's centre, the largest a quarter of the
+// motion's extent long.
+const arrows = data.scene.forces.map((owner) => {
+  const columns = ['x', 'y', 'z'].map((c) => run.columns[`${owner}.${c}`]);
+  const force = ['x', 'y', 'z'].map((c) => run.columns[`${owner}.Fc.${c}`]);
+  const arrow = new ArrowHelper(new Vector3(1, 0, 0), new Vector3(), 1, 0xaa0000);
+  scene.add(arrow);
+  return { arrow, columns, force };
+});
+let largestForce = 0;
+for (const a of arrows) {
+  for (let k = 0; k < time.length; ++k) {
+    largestForce = Math.max(largestForce, Math.hypot(a.force[0][k], a.force[1][k], a.force[2][k]));
+  }
+}
 // the book's frame in three's: a rotation taking (x, y, z) to (x, z, −y)
 const bookToView = new Quaternion().setFromAxisAngle(new Vector3(1, 0, 0), -Math.PI / 2);
 scene.rotation.set(0, 0, 0);
@@ -322,6 +342,15 @@ function show(k) {
       actor.frame.visible = frames.checked;
     }
   }
+  for (const a of arrows) {
+    const f = toView(a.force[0][k], a.force[1][k], a.force[2][k]);
+    const length = largestForce > 0 ? f.length() / largestForce * 0.25 * size : 0;
+    a.arrow.visible = forcesShown.checked && length > 1e-6 * size;
+    if (!a.arrow.visible) continue;
+    a.arrow.position.copy(toView(a.columns[0][k], a.columns[1][k], a.columns[2][k]));
+    a.arrow.setDirection(f.normalize());
+    a.arrow.setLength(length, 0.2 * length, 0.1 * length);
+  }
   followBody();
   slider.value = String(k);
   clock.textContent = `t = ${time[k].toFixed(3)}`;
@@ -357,6 +386,7 @@ speed.addEventListener('change', () => {
   startTime = time[index];
 });
 frames.addEventListener('change', () => show(index));
+forcesShown.addEventListener('change', () => show(index));
 orbit.addEventListener('change', () => renderer.render(scene, camera));
 function frame() {
   if (playing) {
@@ -421,6 +451,7 @@ function selftest() {
     scene_moves: first !== last,
     math: document.querySelectorAll('math').length,
     actors: actors.length,
+    arrows: arrows.length,
     ready_ms: Math.round(readyMilliseconds),
   };
   document.body.append(element('pre', { id: 'selftest' }, JSON.stringify(result)));

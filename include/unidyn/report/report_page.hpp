@@ -16,10 +16,12 @@
 
 namespace unidyn {
 
-// A run of the model: its rows with their columns (the simulation's, then the poses'), the
-// summary printed for it, and its phases and events (t, what).
+// A run of the model: its rows with their columns (the simulation's, then the poses', then the
+// constraint forces' of `force_owners`, numeric/constraint_forces.hpp), the summary printed for
+// it, and its phases and events (t, what).
 struct ReportRun {
   std::vector<std::string> columns;
+  std::vector<std::string> force_owners;
   std::vector<std::vector<double>> rows;
   std::string summary;
   std::vector<std::pair<double, std::string>> events;
