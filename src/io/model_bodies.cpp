@@ -1,6 +1,9 @@
 // The model file's parameters, coordinates, particles and bodies (inertia, rotation, Euler charts).
 #include "model_reader.hpp"
 
+#include <algorithm>
+#include <cctype>
+
 #include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn::model_reading {
@@ -62,7 +65,7 @@ void ModelReader::read_bodies(const YAML::Node& node, System& system) {
     const std::string name = new_name(item.first, system, "body");
     const YAML::Node& spec = item.second;
     expect_map(spec, "body '" + name + "'");
-    expect_keys(spec, {"mass", "inertia", "rotation", "center"}, "body '" + name + "'");
+    expect_keys(spec, {"mass", "inertia", "rotation", "center", "visual"}, "body '" + name + "'");
     if (!spec["mass"] || !spec["inertia"] || !spec["rotation"] || !spec["center"]) {
       fail(spec, "body '" + name + "' needs mass:, inertia:, rotation: and center:");
     }
@@ -77,7 +80,8 @@ void ModelReader::read_bodies(const YAML::Node& node, System& system) {
               rotation(spec["rotation"], system),
               VectorExpr{},
               at(item.first),
-              euler_chart(spec["rotation"], system)};
+              euler_chart(spec["rotation"], system),
+              BodyVisual{}};
     add_unit_norm_constraint(spec["rotation"], name, system);
     // the centre may use the body's own basis (l*top.e3): the body is known before it is read
     system.bodies.push_back(body);
@@ -86,6 +90,8 @@ void ModelReader::read_bodies(const YAML::Node& node, System& system) {
     expect_state_only(spec["center"], center, system, "a centre of mass");
     system.bodies.back().center = center;
     expect_realisable_inertia(spec["inertia"], system.bodies.back().inertia, system);
+    system.bodies.back().visual = spec["visual"] ? visual(spec["visual"], system)
+                                                 : visual_of_inertia(spec["inertia"], system);
   }
   // each body's ω (all at once: their simplification shared among processes), then whether a
   // body turns about an axis along which it has no inertia
@@ -93,6 +99,58 @@ void ModelReader::read_bodies(const YAML::Node& node, System& system) {
   std::size_t b = 0;
   for (const auto& item : node)
     expect_inertia_about_rotation_axes(item.second["rotation"], b++, system);
+}
+
+// A shape with its dimensions, {disk: {radius: R}}, as the inertia's shapes are written.
+BodyVisual ModelReader::shape_visual(const YAML::Node& node, const std::string& shape,
+                                     const System& system) {
+  const SystemScope scope(system);
+  BodyVisual out{shape, {}, ""};
+  const auto names = shape_dimensions(shape);
+  expect_map(node, shape);
+  expect_keys(node, std::set<std::string>(names.begin(), names.end()), shape);
+  for (const auto& n : names) {
+    if (!node[n]) fail(node, shape + " needs " + n + ":");
+    out.dimensions.push_back(scalar_expr(node[n], scope, n));
+    expect_state_only(node[n], out.dimensions.back(), system, "a dimension");
+  }
+  return out;
+}
+
+// visual: {SHAPE: {dimensions}, color: "#rrggbb"} (both optional).
+BodyVisual ModelReader::visual(const YAML::Node& node, const System& system) {
+  expect_map(node, "visual");
+  BodyVisual out;
+  for (const auto& item : node) {
+    const std::string key = item.first.Scalar();
+    if (key == "color") {
+      const std::string color = scalar(item.second, "color");
+      const bool hex = color.size() == 7 && color[0] == '#' &&
+                       std::all_of(color.begin() + 1, color.end(), [](char c) {
+                         return std::isxdigit(static_cast<unsigned char>(c));
+                       });
+      if (!hex) fail(item.second, "a colour is written #rrggbb (six hexadecimal digits)");
+      out.color = color;
+    } else if (!shape_dimensions(key).empty()) {
+      if (!out.shape.empty()) fail(item.first, "visual: has one shape");
+      const std::string color = out.color;
+      out = shape_visual(item.second, key, system);
+      out.color = color;
+    } else {
+      fail(item.first,
+           "visual: has a shape (sphere, hollow_sphere, cylinder, hollow_cylinder, "
+           "disk, rod, box, ellipsoid, cone) and a color");
+    }
+  }
+  return out;
+}
+
+// An inertia given as a shape is drawn as that shape; otherwise nothing is said.
+BodyVisual ModelReader::visual_of_inertia(const YAML::Node& node, const System& system) {
+  if (node.IsMap() && node.size() == 1 && !shape_dimensions(node.begin()->first.Scalar()).empty()) {
+    return shape_visual(node.begin()->second, node.begin()->first.Scalar(), system);
+  }
+  return {};
 }
 
 // [A, B, C] principal moments along e1, e2, e3, or {tensor: [[..], [..], [..]]} (components on

@@ -247,6 +247,9 @@ class ModelReader {
   std::optional<EulerChart> euler_chart(const YAML::Node& node, const System& system);
   void add_unit_norm_constraint(const YAML::Node& node, const std::string& body, System& system);
   GiNaC::matrix inertia(const YAML::Node& node, const System& system);
+  BodyVisual visual(const YAML::Node& node, const System& system);
+  BodyVisual visual_of_inertia(const YAML::Node& node, const System& system);
+  BodyVisual shape_visual(const YAML::Node& node, const std::string& shape, const System& system);
   void read_definitions(const YAML::Node& node, System& system);
   void read_forces(const YAML::Node& node, System& system);
   ForcePoint force_point(const YAML::Node& node, const System& system, const Scope& scope);

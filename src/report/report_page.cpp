@@ -170,9 +170,20 @@ std::string run_json(const System& system, const ReportRun& run) {
   return out;
 }
 
-// The 3-D scene: each body's ellipsoid of inertia (the uniform ellipsoid with its mass and
-// principal moments: a² = 5 (B + C − A)/(2m) and cyclically, along its principal axes in the body
-// basis), each particle's sphere, and the box the motion stays in.
+// A body's shape for the viewer: {"shape", "dimensions" (numbers), "color"}, or null.
+std::string visual_json(const BodyVisual& visual, const GiNaC::exmap& values) {
+  if (visual.shape.empty() && visual.color.empty()) return "null";
+  std::vector<std::string> dimensions;
+  for (const Expr& d : visual.dimensions) dimensions.push_back(json_number(real_value(d, values)));
+  return "{\"shape\": " + unidyn::quoted(visual.shape) + ", \"dimensions\": [" +
+         fmt::format("{}", fmt::join(dimensions, ", ")) +
+         "], \"color\": " + unidyn::quoted(visual.color) + "}";
+}
+
+// The 3-D scene: each body's shape (its `visual:` or inertia shape) and its ellipsoid of inertia
+// (the uniform ellipsoid with its mass and principal moments: a² = 5 (B + C − A)/(2m) and
+// cyclically, along its principal axes in the body basis) for a body without one, each particle's
+// sphere, and the box the motion stays in.
 std::string scene_json(const ReportModel& model, const ReportRun& run) {
   const System& system = model.system;
   GiNaC::exmap values;
@@ -226,7 +237,7 @@ std::string scene_json(const ReportModel& model, const ReportRun& run) {
         fmt::format("[{}, {}, {}], [{}, {}, {}], [{}, {}, {}]", number(V(0, 0)), number(V(0, 1)),
                     number(V(0, 2)), number(V(1, 0)), number(V(1, 1)), number(V(1, 2)),
                     number(V(2, 0)), number(V(2, 1)), number(V(2, 2))) +
-        "]}");
+        "], \"visual\": " + visual_json(b.visual, values) + "}");
   }
   const Eigen::Vector3d center = 0.5 * (low + high);
   const double extent = std::max({0.5 * (high - low).norm(), 2 * largest, 1e-3});

@@ -339,6 +339,41 @@ TEST(ModelFile, QuaternionInAProductGetsItsUnitNorm) {
   EXPECT_NEAR(value_at(s, s.constraints[1].expression, unit), 0.0, 1e-15);
 }
 
+// visual: a shape in the body's basis and a colour; an inertia given as a shape is drawn as it;
+// a colour not #rrggbb and a key that is neither are refused where they are.
+TEST(ModelFile, BodyVisuals) {
+  const auto body = [](const std::string& inertia, const std::string& visual) {
+    std::vector<std::string> lines{"unidyn: 1",
+                                   "name: v",
+                                   "parameters: {R: 2}",
+                                   "coordinates: [a]",
+                                   "bodies:",
+                                   "  b:",
+                                   "    mass: 1",
+                                   "    inertia: " + inertia,
+                                   "    rotation: {axis: [0, 0, 1], angle: a}",
+                                   "    center: [0, 0, 0]"};
+    if (!visual.empty()) lines.push_back("    visual: " + visual);
+    std::string text;
+    for (const std::string& line : lines) text += line + "\n";
+    return text;
+  };
+  const System box =
+      parse_model(body("[1, 2, 3]", "{box: {a: 1, b: R, c: 3}, color: \"#aa3300\"}"), "v.yaml");
+  EXPECT_EQ(box.bodies[0].visual.shape, "box");
+  ASSERT_EQ(box.bodies[0].visual.dimensions.size(), 3u);
+  EXPECT_EQ(box.bodies[0].visual.dimensions[1], box.parameters[0].symbol);
+  EXPECT_EQ(box.bodies[0].visual.color, "#aa3300");
+  const System disk = parse_model(body("{disk: {radius: R}}", ""), "v.yaml");
+  EXPECT_EQ(disk.bodies[0].visual.shape, "disk");
+  EXPECT_EQ(disk.bodies[0].visual.color, "");
+  const System plain = parse_model(body("[1, 2, 3]", ""), "v.yaml");
+  EXPECT_EQ(plain.bodies[0].visual.shape, "");
+  expect_error(body("[1, 2, 3]", "{color: red}"), 11, 21, {"#rrggbb"});
+  expect_error(body("[1, 2, 3]", "{teapot: {size: 1}}"), 11, 14, {"visual: has a shape"});
+  expect_error(body("[1, 2, 3]", "{sphere: {}}"), 11, 22, {"sphere needs radius:"});
+}
+
 TEST(ModelFile, InitialValues) {
   const System s = parse_model(kEverything, "everything.yaml");
   ASSERT_EQ(s.initial_values.size(), 2u);

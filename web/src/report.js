@@ -6,8 +6,11 @@ import {
   AmbientLight,
   ArrowHelper,
   AxesHelper,
+  BoxGeometry,
   BufferGeometry,
   Color,
+  ConeGeometry,
+  CylinderGeometry,
   DirectionalLight,
   Float32BufferAttribute,
   GridHelper,
@@ -247,6 +250,24 @@ scene.add(grid);
 const axes = new AxesHelper(0.5 * size);
 scene.add(axes);
 
+// A body's shape in its own basis, centred on its centre of mass, its axis of symmetry along e3
+// (three's shapes of revolution are along their y: turned onto z); the dimensions as the model
+// language's inertia shapes take them.
+function shapeGeometry({ shape, dimensions: d }) {
+  const alongE3 = (g) => g.rotateX(Math.PI / 2);
+  switch (shape) {
+    case 'sphere': case 'hollow_sphere': return new SphereGeometry(d[0], 32, 20);
+    case 'cylinder': case 'hollow_cylinder': return alongE3(new CylinderGeometry(d[0], d[0], d[1], 40));
+    case 'disk': return alongE3(new CylinderGeometry(d[0], d[0], 0.06 * d[0], 48));
+    case 'rod': return alongE3(new CylinderGeometry(d[0] / 40, d[0] / 40, d[0], 12));
+    case 'box': return new BoxGeometry(d[0], d[1], d[2]);
+    case 'ellipsoid': return new SphereGeometry(1, 32, 20).scale(d[0], d[1], d[2]);
+    // the centre of mass a quarter of the height above the base
+    case 'cone': return alongE3(new ConeGeometry(d[0], d[1], 40).translate(0, d[1] / 4, 0));
+    default: return null;
+  }
+}
+
 const actors = [];
 data.scene.particles.forEach((p, k) => {
   const mesh = new Mesh(new SphereGeometry(p.radius, 24, 16),
@@ -259,15 +280,19 @@ data.scene.particles.forEach((p, k) => {
 });
 data.scene.bodies.forEach((b, k) => {
   const group = new Group();
-  const shape = new Mesh(new SphereGeometry(1, 32, 20),
-    new MeshStandardMaterial({ color: palette[(k + 3) % palette.length], roughness: 0.6 }));
-  shape.scale.set(...b.semi_axes);
-  // the principal axes in the body frame
-  const m = new Matrix4();
-  const a = b.principal_axes;
-  m.set(a[0][0], a[0][1], a[0][2], 0, a[1][0], a[1][1], a[1][2], 0, a[2][0], a[2][1], a[2][2], 0,
-    0, 0, 0, 1);
-  shape.quaternion.setFromRotationMatrix(m);
+  const color = b.visual && b.visual.color ? b.visual.color : palette[(k + 3) % palette.length];
+  const geometry = b.visual && b.visual.shape ? shapeGeometry(b.visual) : null;
+  const shape = new Mesh(geometry || new SphereGeometry(1, 32, 20),
+    new MeshStandardMaterial({ color, roughness: 0.6 }));
+  if (!geometry) {
+    // the ellipsoid of inertia along the principal axes in the body frame
+    shape.scale.set(...b.semi_axes);
+    const m = new Matrix4();
+    const a = b.principal_axes;
+    m.set(a[0][0], a[0][1], a[0][2], 0, a[1][0], a[1][1], a[1][2], 0, a[2][0], a[2][1], a[2][2], 0,
+      0, 0, 0, 1);
+    shape.quaternion.setFromRotationMatrix(m);
+  }
   group.add(shape);
   const frame = new AxesHelper(1.5 * Math.max(...b.semi_axes));
   frame.visible = false;

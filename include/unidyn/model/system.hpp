@@ -43,6 +43,16 @@ struct EulerChart {
   std::array<std::size_t, 3> coordinates;
 };
 
+// How a viewer draws a body (the report): a uniform shape of kinematics/inertia.hpp's in the body's
+// basis (its axis of symmetry along e3), its dimensions in shape_dimensions' order, and a colour
+// ("#rrggbb", "" for the viewer's own). From `visual:`, else from an inertia given as a shape;
+// no shape: the viewer draws the ellipsoid of inertia.
+struct BodyVisual {
+  std::string shape;
+  std::vector<Expr> dimensions;
+  std::string color;
+};
+
 struct Body {
   std::string name;
   Expr mass;
@@ -51,6 +61,7 @@ struct Body {
   VectorExpr center;
   SourcePosition where;
   std::optional<EulerChart> chart;
+  BodyVisual visual;
 };
 
 // A force F acting on a particle (the vector Newton's law sees).
