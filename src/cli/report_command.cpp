@@ -85,7 +85,15 @@ int run_report(const ModelCommands& c, const CommandModel& model) {
 
   // the equations and their check
   const EquationsOfMotion lagrange = lagrange_equations(system);
-  const ReportModel report{system, lagrange, start.parameters, check_text(system, lagrange)};
+  ReportModel report{system, lagrange, start.parameters, check_text(system, lagrange), {}, 0, ""};
+  // the equilibria, from fewer starts than `unidyn equilibria` takes: a page is made in seconds
+  EquilibriumSearch search;
+  search.starts = report.equilibrium_starts = 100;
+  try {
+    report.equilibria = find_equilibria(system, compiled, {}, start.parameters, search);
+  } catch (const std::invalid_argument& e) {
+    report.equilibria_not_sought = e.what();
+  }
   const std::string page = report_page(report, run, *assets);
   file << page;
   file.close();

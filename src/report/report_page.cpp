@@ -170,6 +170,35 @@ std::string run_json(const System& system, const ReportRun& run) {
   return out;
 }
 
+// The equilibria found: for each its coordinates (an ignorable one "any"), rates, verdict and
+// reason, the dimension of a continuum it lies on, and the energy method's word.
+std::string equilibria_json(const ReportModel& model) {
+  if (!model.equilibria) {
+    return "{\"not_sought\": " + unidyn::quoted(model.equilibria_not_sought) + "}";
+  }
+  const EquilibriumSearchResult& found = *model.equilibria;
+  const auto& q = model.system.coordinates();
+  std::vector<std::string> items;
+  for (const Equilibrium& e : found.equilibria) {
+    std::vector<std::string> values;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const auto& ignorable = e.linearization.ignorable;
+      const bool any = std::find(ignorable.begin(), ignorable.end(), q[i].name) != ignorable.end();
+      values.push_back(any ? std::string("\"any\"")
+                           : fmt::format("{:.9g}", e.point.q[static_cast<Eigen::Index>(i)]));
+    }
+    items.push_back(
+        "{\"coordinates\": [" + fmt::format("{}", fmt::join(values, ", ")) +
+        "], \"stability\": " + unidyn::quoted(to_string(e.modes.verdict)) +
+        ", \"reason\": " + unidyn::quoted(e.modes.reason) +
+        ", \"continuum\": " + std::to_string(e.continuum) + ", \"potential_minimum\": " +
+        (e.potential_minimum ? (*e.potential_minimum ? "true" : "false") : "null") + "}");
+  }
+  return fmt::format("{{\"starts\": {}, \"singular\": {}, \"moving\": {}, \"items\": [{}]}}",
+                     model.equilibrium_starts, found.singular, found.not_steady,
+                     fmt::join(items, ",\n"));
+}
+
 // A body's shape for the viewer: {"shape", "dimensions" (numbers), "color"}, or null.
 std::string visual_json(const BodyVisual& visual, const GiNaC::exmap& values) {
   if (visual.shape.empty() && visual.color.empty()) return "null";
@@ -291,6 +320,7 @@ std::string report_page(const ReportModel& model, const ReportRun& run, const We
   const std::string data = "{\"model\": " + model_json(model) +
                            ",\n\"equations\": " + equations_json(model) +
                            ",\n\"run\": " + run_json(model.system, run) +
+                           ",\n\"equilibria\": " + equilibria_json(model) +
                            ",\n\"scene\": " + scene_json(model, run) + "}";
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
          "<meta name=\"generator\" content=\"unidyn report\">\n<title>" +

@@ -68,6 +68,10 @@ TEST_P(Report, DrawsItselfInChromium) {
   EXPECT_TRUE(contains(result, "\"scene_moves\":true")) << result;
   EXPECT_GE(count(result, "math"), 1) << result;
   EXPECT_GE(count(result, "actors"), 1) << result;
+  // the rolling disk's equilibria (upright or not, at rest) listed
+  if (model == "rolling-disk") {
+    EXPECT_GE(count(result, "equilibria"), 1) << result;
+  }
   // the rolling disk's constraint force as an arrow (the others have no constraints)
   EXPECT_EQ(count(result, "arrows"), model == "rolling-disk" ? 1 : 0) << result;
   // each body turned as its Euler parameters say (to float precision: the page's data is float32)
@@ -107,6 +111,25 @@ TEST(Report, TenSecondsUnderTwoMegabytes) {
   const Outcome made = run("report bicycle --t-end 10 -o '" + page + "'");
   ASSERT_EQ(made.status, 0) << made.out << made.err;
   EXPECT_LT(std::filesystem::file_size(page), 2'000'000u);
+  std::remove(page.c_str());
+}
+
+// The bead on the hoop: its four equilibria and their verdicts in the page's data; a model with
+// friction says why none were sought.
+TEST(Report, EquilibriaInThePage) {
+  const std::string page = temp_path("hoop.html");
+  ASSERT_EQ(run("report rotating-hoop --t-end 1 -o '" + page + "'").status, 0);
+  const std::string hoop = read_file(page);
+  EXPECT_TRUE(contains(hoop, "\"equilibria\": {\"starts\": 100")) << hoop.substr(0, 2000);
+  std::size_t stable = 0;
+  for (std::size_t at = hoop.find("\"stability\": \"linearly stable\""); at != std::string::npos;
+       at = hoop.find("\"stability\": \"linearly stable\"", at + 1)) {
+    ++stable;
+  }
+  EXPECT_EQ(stable, 2u);  // ±acos(−g/(R0 Ω²)); the top and bottom are unstable
+  ASSERT_EQ(run("report block-incline --t-end 1 -o '" + page + "'").status, 0);
+  EXPECT_TRUE(contains(read_file(page),
+                       "\"equilibria\": {\"not_sought\": \"constraint 'plane' has friction"));
   std::remove(page.c_str());
 }
 

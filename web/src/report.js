@@ -67,7 +67,7 @@ app.append(element('h1', {}, data.model.name));
 if (data.model.reference) app.append(element('p', { class: 'reference' }, data.model.reference));
 const sections = {};
 for (const [id, title] of [['motion', 'Motion'], ['run', 'Run'], ['phase', 'Phase portraits'],
-  ['equations', 'Equations of motion'], ['model', 'Model']]) {
+  ['equations', 'Equations of motion'], ['equilibria', 'Equilibria'], ['model', 'Model']]) {
   sections[id] = element('section', { id }, element('h2', {}, title));
   app.append(sections[id]);
 }
@@ -106,6 +106,36 @@ function displayable(tex) {
   }
   for (const note of data.equations.notes) s.append(element('p', { class: 'note' }, note));
   if (data.equations.check) s.append(element('pre', {}, data.equations.check));
+}
+
+// --- The equilibria (`unidyn equilibria`): each with its verdict -------------------------------
+{
+  const s = section('Equilibria', 'equilibria');
+  const found = data.equilibria;
+  if (found.not_sought !== undefined) {
+    s.append(element('p', { class: 'note' }, `Not sought: ${found.not_sought}`));
+  } else {
+    s.append(element('p', {}, `${found.items.length} found from ${found.starts} starts` +
+      (found.singular ? `; ${found.singular} starts ended where the equations are singular` : '') +
+      (found.moving ? `; ${found.moving} balance points move` : '') +
+      '. Coordinates in the order: ' + data.model.coordinates.join(', ') + '.'));
+    const table = element('table', { class: 'parameters' });
+    table.append(element('tr', {}, element('th', {}, '#'), element('th', {}, 'coordinates'),
+      element('th', {}, 'stability'), element('th', {}, 'potential')));
+    const shown = found.items.slice(0, 12);
+    shown.forEach((e, k) => {
+      const potential = e.potential_minimum === null ? '' :
+        e.potential_minimum ? 'strict minimum' : 'no minimum';
+      table.append(element('tr', {}, element('td', {}, String(k + 1)),
+        element('td', {}, e.coordinates.join(', ') +
+          (e.continuum ? ` (on a ${e.continuum}-dimensional continuum)` : '')),
+        element('td', { title: e.reason }, e.stability), element('td', {}, potential)));
+    });
+    s.append(table);
+    if (found.items.length > shown.length) {
+      s.append(element('p', {}, `… and ${found.items.length - shown.length} more (unidyn equilibria lists every one)`));
+    }
+  }
 }
 
 // --- The run: its summary, events, plots --------------------------------------------------------
@@ -477,6 +507,7 @@ function selftest() {
     math: document.querySelectorAll('math').length,
     actors: actors.length,
     arrows: arrows.length,
+    equilibria: data.equilibria.items ? data.equilibria.items.length : -1,
     ready_ms: Math.round(readyMilliseconds),
   };
   document.body.append(element('pre', { id: 'selftest' }, JSON.stringify(result)));

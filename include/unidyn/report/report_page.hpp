@@ -7,10 +7,12 @@
 // its data is one JSON object in it: it opens from a file, with no network and no server.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "unidyn/analysis/equilibria.hpp"
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/report/web_assets.hpp"
 
@@ -27,12 +29,17 @@ struct ReportRun {
   std::vector<std::pair<double, std::string>> events;
 };
 
-// What the page says of the model beyond its equations: the Newton–Euler check in words.
+// What the page says of the model beyond its equations: the Newton–Euler check in words, and its
+// equilibria (analysis/equilibria.hpp) with the starts they were sought from, or why they were
+// not sought.
 struct ReportModel {
   const System& system;
   const EquationsOfMotion& equations;
   std::vector<double> parameters;
   std::string check;
+  std::optional<EquilibriumSearchResult> equilibria;
+  std::size_t equilibrium_starts = 0;
+  std::string equilibria_not_sought;
 };
 
 // The page. Equal input gives the same bytes.
