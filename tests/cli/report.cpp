@@ -67,6 +67,7 @@ TEST_P(Report, DrawsItselfInChromium) {
   EXPECT_TRUE(contains(result, "\"scene_drawn\":true")) << result;
   EXPECT_TRUE(contains(result, "\"scene_moves\":true")) << result;
   EXPECT_GE(count(result, "math"), 1) << result;
+  EXPECT_EQ(count(result, "math_errors"), 0) << result;
   EXPECT_GE(count(result, "actors"), 1) << result;
   // the rolling disk's equilibria (upright or not, at rest) listed
   if (model == "rolling-disk") {

@@ -186,6 +186,11 @@ function plot(parent, title, names) {
     }))],
     hooks: { draw: [markers] },
   }, [time, ...present.map((n) => run.columns[n])], box);
+  // a click on a plot takes the animation to that instant
+  chart.over.addEventListener('click', () => {
+    if (chart.cursor.left == null || chart.cursor.left < 0) return;
+    seek(chart.posToVal(chart.cursor.left, 'x'));
+  });
   charts.push(chart);
 }
 {
@@ -414,6 +419,15 @@ function show(k) {
   renderer.render(scene, camera);
 }
 
+// The animation at the row nearest time t, paused there.
+function seek(t) {
+  let k = 0;
+  while (k + 1 < time.length && Math.abs(time[k + 1] - t) <= Math.abs(time[k] - t)) ++k;
+  playing = false;
+  play.textContent = 'Play';
+  show(k);
+}
+
 // Playing: the run's time follows the clock at the speed chosen.
 let playing = true, start = performance.now(), startTime = time[0];
 const hash = new URLSearchParams(location.hash.slice(1));
@@ -505,6 +519,7 @@ function selftest() {
     scene_drawn: drawn(renderer.domElement),
     scene_moves: first !== last,
     math: document.querySelectorAll('math').length,
+    math_errors: document.querySelectorAll('.katex-error').length,
     actors: actors.length,
     arrows: arrows.length,
     equilibria: data.equilibria.items ? data.equilibria.items.length : -1,
