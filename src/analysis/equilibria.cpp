@@ -125,6 +125,120 @@ MatrixXd momentum_derivative(const Tape& momentum, const OperatingPoint& point) 
   return out;
 }
 
+// The values given, held during the search: coordinates and rates (0 when not given; a
+// coordinate not given starts at the model's initial value), and the momenta of cyclic ones.
+struct GivenState {
+  VectorXd q, qdot;
+  std::vector<bool> q_given, rate_given;
+  std::vector<std::optional<double>> momentum;
+};
+
+GivenState given_state(const System& system, const std::vector<GivenValue>& given,
+                       const std::vector<double>& parameters, const std::vector<Index>& cyclic) {
+  const auto n = static_cast<Index>(system.coordinates().size());
+  const auto name_of = [&](Index i) -> const std::string& {
+    return system.coordinates()[static_cast<std::size_t>(i)].name;
+  };
+  const auto is_cyclic = [&](Index i) {
+    return std::find(cyclic.begin(), cyclic.end(), i) != cyclic.end();
+  };
+  GiNaC::exmap values;
+  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
+    values[system.parameters[k].symbol] = parameters[k];
+  }
+  GivenState out{VectorXd::Zero(n), VectorXd::Zero(n),
+                 std::vector<bool>(static_cast<std::size_t>(n), false),
+                 std::vector<bool>(static_cast<std::size_t>(n), false),
+                 std::vector<std::optional<double>>(static_cast<std::size_t>(n))};
+  for (const GivenValue& g : given) {
+    const std::optional<double> v = real_value(g.value, values);
+    if (!v) throw std::invalid_argument("--at " + g.name + ": not a real number");
+    if (const auto i = momentum_coordinate(system, g.name)) {
+      if (!is_cyclic(static_cast<Index>(*i))) {
+        throw std::invalid_argument("--at " + g.name +
+                                    ": a momentum is given only for a cyclic coordinate (say "
+                                    "--cyclic " +
+                                    name_of(static_cast<Index>(*i)) + ")");
+      }
+      out.momentum[*i] = *v;
+      continue;
+    }
+    const auto [coordinate, rate] = *state_value(system, g.name);
+    (rate ? out.qdot : out.q)[static_cast<Index>(coordinate)] = *v;
+    (rate ? out.rate_given : out.q_given)[coordinate] = true;
+  }
+  for (const Index i : cyclic) {
+    if (out.momentum[static_cast<std::size_t>(i)] && out.rate_given[static_cast<std::size_t>(i)]) {
+      throw std::invalid_argument("--at gives both der(" + name_of(i) + ") and p(" + name_of(i) +
+                                  "): give one");
+    }
+  }
+  for (Index i = 0; i < n; ++i) {
+    if (!out.q_given[static_cast<std::size_t>(i)]) {
+      out.q[i] =
+          real_value(system.initial_values[static_cast<std::size_t>(i)], values).value_or(0.0);
+    }
+  }
+  return out;
+}
+
+// The balance's unknowns: the coordinates neither given nor cyclic; a cyclic coordinate's rate
+// when its momentum is given or, not given, when a constraint involves it (then its acceleration
+// too, where it appears nowhere else); the other rates stay as given (0).
+void choose_unknowns(SteadyBalance& balance, const GivenState& held,
+                     const std::vector<Index>& cyclic) {
+  const CompiledSystem& compiled = balance.compiled;
+  const auto n = static_cast<Index>(compiled.coordinate_count());
+  const auto m = static_cast<Index>(compiled.constraint_count());
+  for (Index i = 0; i < n; ++i) {
+    if (!held.q_given[static_cast<std::size_t>(i)] &&
+        std::find(cyclic.begin(), cyclic.end(), i) == cyclic.end()) {
+      balance.free_q.push_back(i);
+    }
+  }
+  const std::vector<double> inputs0 = tape_inputs_at(0.0, held.q, held.qdot, balance.parameters);
+  const std::vector<double> constraints0 = compiled.constraint_tape().evaluate(inputs0);
+  std::vector<double> given_momenta;
+  for (std::size_t k = 0; k < cyclic.size(); ++k) {
+    const Index i = cyclic[k];
+    if (const auto p = held.momentum[static_cast<std::size_t>(i)]) {
+      balance.free_rate.push_back(i);
+      balance.momentum_given.push_back(static_cast<Index>(k));
+      given_momenta.push_back(*p);
+      continue;
+    }
+    if (held.rate_given[static_cast<std::size_t>(i)]) continue;
+    bool constrained = false;
+    for (Index c = 0; c < m; ++c) constrained = constrained || constraints0[c * n + i] != 0.0;
+    if (!constrained) continue;
+    balance.free_rate.push_back(i);
+    const auto zero = [](const std::vector<double>& v) {
+      return std::all_of(v.begin(), v.end(), [](double x) { return x == 0.0; });
+    };
+    if (zero(along(compiled.dynamics(), inputs0, static_cast<std::size_t>(1 + i)).second) &&
+        zero(along(compiled.constraint_tape(), inputs0, static_cast<std::size_t>(1 + i)).second)) {
+      balance.free_acceleration.push_back(i);
+    }
+  }
+  balance.momentum_value =
+      Eigen::Map<const VectorXd>(given_momenta.data(), static_cast<Index>(given_momenta.size()));
+}
+
+// The coordinates of each body's Euler parameters (those of a unit-norm constraint).
+std::vector<std::vector<Index>> euler_parameter_groups(const System& system) {
+  std::vector<std::vector<Index>> groups;
+  for (const Constraint& c : system.constraints) {
+    if (!c.parametrisation) continue;
+    groups.emplace_back();
+    for (std::size_t i = 0; i < system.coordinates().size(); ++i) {
+      if (c.expression.has(system.coordinates()[i].value)) {
+        groups.back().push_back(static_cast<Index>(i));
+      }
+    }
+  }
+  return groups;
+}
+
 }  // namespace
 
 EquilibriumSearchResult find_equilibria(const System& system, const CompiledSystem& compiled,
@@ -133,10 +247,8 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
                                         const EquilibriumSearch& search) {
   expect_smooth_contacts(system, parameters);
   const auto n = static_cast<Index>(compiled.coordinate_count());
-  const auto m = static_cast<Index>(compiled.constraint_count());
-  const auto& coordinates = system.coordinates();
   const auto name_of = [&](Index i) -> const std::string& {
-    return coordinates[static_cast<std::size_t>(i)].name;
+    return system.coordinates()[static_cast<std::size_t>(i)].name;
   };
   // The cyclic coordinates.
   std::vector<Index> cyclic;
@@ -148,86 +260,16 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
     }
     cyclic.push_back(static_cast<Index>(*i));
   }
-  const auto is_cyclic = [&](Index i) {
-    return std::find(cyclic.begin(), cyclic.end(), i) != cyclic.end();
-  };
-  // The values given (rates 0 when not) at the parameters' values.
-  GiNaC::exmap values;
-  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
-    values[system.parameters[k].symbol] = parameters[k];
-  }
-  VectorXd q0 = VectorXd::Zero(n), qdot0 = VectorXd::Zero(n);
-  std::vector<bool> q_given(static_cast<std::size_t>(n), false), rate_given = q_given;
-  std::vector<std::optional<double>> momentum(static_cast<std::size_t>(n));
-  for (const GivenValue& g : given) {
-    const std::optional<double> v = real_value(g.value, values);
-    if (!v) throw std::invalid_argument("--at " + g.name + ": not a real number");
-    if (const auto i = momentum_coordinate(system, g.name)) {
-      if (!is_cyclic(static_cast<Index>(*i))) {
-        throw std::invalid_argument("--at " + g.name +
-                                    ": a momentum is given for a cyclic "
-                                    "coordinate (say --cyclic " +
-                                    coordinates[*i].name + ")");
-      }
-      momentum[*i] = *v;
-      continue;
-    }
-    const auto [coordinate, rate] = *state_value(system, g.name);
-    (rate ? qdot0 : q0)[static_cast<Index>(coordinate)] = *v;
-    (rate ? rate_given : q_given)[coordinate] = true;
-  }
-  for (const Index i : cyclic) {
-    if (momentum[static_cast<std::size_t>(i)] && rate_given[static_cast<std::size_t>(i)]) {
-      throw std::invalid_argument("--at gives both der(" + name_of(i) + ") and p(" + name_of(i) +
-                                  "): give one");
-    }
-  }
-  // Coordinates not given start at the model's initial values (the cyclic ones stay there).
-  for (Index i = 0; i < n; ++i) {
-    if (!q_given[static_cast<std::size_t>(i)]) {
-      q0[i] = real_value(system.initial_values[static_cast<std::size_t>(i)], values).value_or(0.0);
-    }
-  }
+  const GivenState held = given_state(system, given, parameters, cyclic);
   const Tape momenta = cyclic.empty() ? Tape() : momentum_tape(system, cyclic);
-  SteadyBalance balance{
-      compiled, 0.0,       parameters, q0, qdot0, {}, {}, {}, cyclic.empty() ? nullptr : &momenta,
-      {},       VectorXd()};
-  for (Index i = 0; i < n; ++i) {
-    if (!q_given[static_cast<std::size_t>(i)] && !is_cyclic(i)) balance.free_q.push_back(i);
-  }
-  // A cyclic coordinate's rate: given, from its momentum, or from the constraints it is in (then
-  // its acceleration too where it appears nowhere else); else 0.
-  const std::vector<double> inputs0 = tape_inputs_at(0.0, q0, qdot0, parameters);
-  const std::vector<double> constraints0 = compiled.constraint_tape().evaluate(inputs0);
-  std::vector<double> given_momenta;
-  for (std::size_t k = 0; k < cyclic.size(); ++k) {
-    const Index i = cyclic[k];
-    if (const auto p = momentum[static_cast<std::size_t>(i)]) {
-      balance.free_rate.push_back(i);
-      balance.momentum_given.push_back(static_cast<Index>(k));
-      given_momenta.push_back(*p);
-      continue;
-    }
-    if (rate_given[static_cast<std::size_t>(i)]) continue;
-    bool constrained = false;
-    for (Index c = 0; c < m; ++c) constrained = constrained || constraints0[c * n + i] != 0.0;
-    if (!constrained) continue;
-    balance.free_rate.push_back(i);
-    const auto dynamics = along(compiled.dynamics(), inputs0, static_cast<std::size_t>(1 + i));
-    const auto constraints =
-        along(compiled.constraint_tape(), inputs0, static_cast<std::size_t>(1 + i));
-    const auto zero = [](const std::vector<double>& v) {
-      return std::all_of(v.begin(), v.end(), [](double x) { return x == 0.0; });
-    };
-    if (zero(dynamics.second) && zero(constraints.second)) {
-      balance.free_acceleration.push_back(i);
-    }
-  }
-  balance.momentum_value =
-      Eigen::Map<const VectorXd>(given_momenta.data(), static_cast<Index>(given_momenta.size()));
+  SteadyBalance balance{compiled, 0.0,       parameters,
+                        held.q,   held.qdot, {},
+                        {},       {},        cyclic.empty() ? nullptr : &momenta,
+                        {},       VectorXd()};
+  choose_unknowns(balance, held, cyclic);
   // Where each free coordinate starts: angles anywhere on the circle, others near the model's
   // value.
-  const VectorXd& initial = q0;
+  const VectorXd& initial = held.q;
   VectorXd spread = VectorXd::Zero(n);
   std::vector<bool> angle(static_cast<std::size_t>(n), false);
   for (const Index i : balance.free_q) {
@@ -239,17 +281,7 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
   std::mt19937 random(search.seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::normal_distribution<double> normal(0.0, 1.0);
-  // the coordinates of each body's Euler parameters (their unit-norm constraint)
-  std::vector<std::vector<Index>> quaternions;
-  for (const Constraint& c : system.constraints) {
-    if (!c.parametrisation) continue;
-    quaternions.emplace_back();
-    for (Index i = 0; i < n; ++i) {
-      if (c.expression.has(coordinates[static_cast<std::size_t>(i)].value)) {
-        quaternions.back().push_back(i);
-      }
-    }
-  }
+  const std::vector<std::vector<Index>> quaternions = euler_parameter_groups(system);
   const auto is_free = [&](Index i) {
     return std::find(balance.free_q.begin(), balance.free_q.end(), i) != balance.free_q.end();
   };

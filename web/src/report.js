@@ -218,6 +218,34 @@ const portraits = [];
     portraits.push({ canvas, x, y });
   }
 }
+// One more portrait of any two columns, chosen.
+{
+  const names = Object.keys(run.columns).filter((n) => n !== 't');
+  const pick = (initial) => {
+    const select = element('select', {});
+    for (const n of names) {
+      const o = element('option', { value: n }, n);
+      if (n === initial) o.selected = true;
+      select.append(o);
+    }
+    return select;
+  };
+  const q = data.model.coordinates;
+  const across = pick(q[0]), up = pick(q.length > 1 ? q[1] : `der(${q[0]})`);
+  const canvas = element('canvas', { width: 260, height: 220, class: 'portrait' });
+  const chosen = { canvas, x: run.columns[across.value], y: run.columns[up.value] };
+  const change = () => {
+    chosen.x = run.columns[across.value];
+    chosen.y = run.columns[up.value];
+    drawPortrait(chosen, index);
+  };
+  across.addEventListener('change', change);
+  up.addEventListener('change', change);
+  sections.phase.querySelector('div.portraits').append(
+    element('figure', {}, canvas, element('figcaption', {}, across, ' vs ', up)));
+  portraits.push(chosen);
+}
+
 function drawPortrait({ canvas, x, y }, index) {
   const ctx = canvas.getContext('2d');
   const w = canvas.width, h = canvas.height, pad = 12;
