@@ -1,10 +1,11 @@
 // The report's page: its data as JSON, and the HTML around it.
 #include "unidyn/report/report_page.hpp"
 
+#include "page_data.hpp"
+
 #include <fmt/format.h>
 
 #include <openssl/evp.h>
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <bit>
@@ -19,16 +20,32 @@
 #include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {
+
+std::string page_number(double x) {
+  return std::isfinite(x) ? fmt::format("{:.9g}", x) : std::string("null");
+}
+
+std::string json_names(const std::vector<std::string>& names) {
+  std::string out = "[";
+  for (std::size_t k = 0; k < names.size(); ++k) out += (k ? ", " : "") + unidyn::quoted(names[k]);
+  return out + "]";
+}
+
 namespace {
+
+template <class Items, class Each>
+std::string json_array(const Items& items, Each each) {
+  std::string out = "[";
+  bool first = true;
+  for (const auto& item : items) {
+    out += (first ? "" : ", ") + each(item);
+    first = false;
+  }
+  return out + "]";
+}
 
 // The most LaTeX the page renders (KaTeX, when it opens).
 constexpr std::size_t kMostEquationBytes = 100'000;
-
-// A number for the page's plots: nine significant digits (the CSV keeps every bit); null when not
-// finite.
-std::string number(double x) {
-  return std::isfinite(x) ? fmt::format("{:.9g}", x) : std::string("null");
-}
 
 // Numbers as 32-bit floats, little-endian, in base64 (RFC 4648).
 std::string float32_base64(const std::vector<double>& values) {
@@ -43,21 +60,6 @@ std::string float32_base64(const std::vector<double>& values) {
                                      static_cast<int>(bytes.size()));
   text.resize(static_cast<std::size_t>(length));
   return text;
-}
-
-template <class Items, class Each>
-std::string json_array(const Items& items, Each each) {
-  std::string out = "[";
-  bool first = true;
-  for (const auto& item : items) {
-    out += (first ? "" : ", ") + each(item);
-    first = false;
-  }
-  return out + "]";
-}
-
-std::string json_names(const std::vector<std::string>& names) {
-  return json_array(names, [](const std::string& s) { return unidyn::quoted(s); });
 }
 
 // The model: name, reference, parameters and their values, coordinates.
@@ -163,123 +165,11 @@ std::string run_json(const System& system, const ReportRun& run) {
   out += "}, \"summary\": " + unidyn::quoted(run.summary) + ", \"events\": " +
          json_array(run.events,
                     [](const std::pair<double, std::string>& e) {
-                      return "{\"t\": " + number(e.first) +
+                      return "{\"t\": " + page_number(e.first) +
                              ", \"what\": " + unidyn::quoted(e.second) + "}";
                     }) +
          ", \"groups\": " + groups_json(system, columns, run.force_owners) + "}";
   return out;
-}
-
-// The equilibria found: for each its coordinates (an ignorable one "any"), rates, verdict and
-// reason, the dimension of a continuum it lies on, and the energy method's word.
-std::string equilibria_json(const ReportModel& model) {
-  if (!model.equilibria) {
-    return "{\"not_sought\": " + unidyn::quoted(model.equilibria_not_sought) + "}";
-  }
-  const EquilibriumSearchResult& found = *model.equilibria;
-  const auto& q = model.system.coordinates();
-  std::vector<std::string> items;
-  for (const Equilibrium& e : found.equilibria) {
-    std::vector<std::string> values;
-    for (std::size_t i = 0; i < q.size(); ++i) {
-      const auto& ignorable = e.linearization.ignorable;
-      const bool any = std::find(ignorable.begin(), ignorable.end(), q[i].name) != ignorable.end();
-      values.push_back(any ? std::string("\"any\"")
-                           : fmt::format("{:.9g}", e.point.q[static_cast<Eigen::Index>(i)]));
-    }
-    items.push_back(
-        "{\"coordinates\": [" + fmt::format("{}", fmt::join(values, ", ")) +
-        "], \"stability\": " + unidyn::quoted(to_string(e.modes.verdict)) +
-        ", \"reason\": " + unidyn::quoted(e.modes.reason) +
-        ", \"continuum\": " + std::to_string(e.continuum) + ", \"potential_minimum\": " +
-        (e.potential_minimum ? (*e.potential_minimum ? "true" : "false") : "null") + "}");
-  }
-  return fmt::format("{{\"starts\": {}, \"singular\": {}, \"moving\": {}, \"items\": [{}]}}",
-                     model.equilibrium_starts, found.singular, found.not_steady,
-                     fmt::join(items, ",\n"));
-}
-
-// A body's shape for the viewer: {"shape", "dimensions" (numbers), "color"}, or null.
-std::string visual_json(const BodyVisual& visual, const GiNaC::exmap& values) {
-  if (visual.shape.empty() && visual.color.empty()) return "null";
-  std::vector<std::string> dimensions;
-  for (const Expr& d : visual.dimensions) dimensions.push_back(json_number(real_value(d, values)));
-  return "{\"shape\": " + unidyn::quoted(visual.shape) + ", \"dimensions\": [" +
-         fmt::format("{}", fmt::join(dimensions, ", ")) +
-         "], \"color\": " + unidyn::quoted(visual.color) + "}";
-}
-
-// The 3-D scene: each body's shape (its `visual:` or inertia shape) and its ellipsoid of inertia
-// (the uniform ellipsoid with its mass and principal moments: a² = 5 (B + C − A)/(2m) and
-// cyclically, along its principal axes in the body basis) for a body without one, each particle's
-// sphere, and the box the motion stays in.
-std::string scene_json(const ReportModel& model, const ReportRun& run) {
-  const System& system = model.system;
-  GiNaC::exmap values;
-  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
-    values[system.parameters[k].symbol] = model.parameters[k];
-  }
-  // the box the centres and particles stay in
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
-  const auto column = [&](const std::string& name) {
-    return static_cast<std::size_t>(std::find(run.columns.begin(), run.columns.end(), name) -
-                                    run.columns.begin());
-  };
-  std::vector<std::string> moving;
-  for (const Body& b : system.bodies) moving.push_back(b.name);
-  for (const Particle& p : system.particles) moving.push_back(p.name);
-  for (const std::string& name : moving) {
-    const std::size_t x = column(name + ".x");
-    if (x + 2 >= run.columns.size()) continue;
-    for (const auto& row : run.rows) {
-      const Eigen::Vector3d r(row[x], row[x + 1], row[x + 2]);
-      if (!r.allFinite()) continue;
-      low = low.cwiseMin(r);
-      high = high.cwiseMax(r);
-    }
-  }
-  if (!low.allFinite()) low = high = Eigen::Vector3d::Zero();
-  std::vector<std::string> bodies;
-  double largest = 0.0;
-  for (const Body& b : system.bodies) {
-    const double m = real_value(b.mass, values).value_or(0.0);
-    Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
-    for (unsigned i = 0; i < 3; ++i) {
-      for (unsigned k = 0; k < 3; ++k) {
-        J(i, k) = real_value(b.inertia(i, k), values).value_or(0.0);
-      }
-    }
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(0.5 * (J + J.transpose()));
-    const Eigen::Vector3d I = principal.eigenvalues();
-    Eigen::Vector3d axes;
-    for (int i = 0; i < 3; ++i) {
-      const double square = m > 0 ? 5.0 * (I.sum() - 2 * I[i]) / (2 * m) : 0.0;
-      axes[i] = std::sqrt(std::max(square, 0.0));
-    }
-    // no thinner than a twentieth of its largest axis (a thin disk's is 0)
-    axes = axes.cwiseMax(0.05 * axes.maxCoeff());
-    largest = std::max(largest, axes.maxCoeff());
-    const Eigen::Matrix3d& V = principal.eigenvectors();
-    bodies.push_back(
-        "{\"name\": " + unidyn::quoted(b.name) + ", \"semi_axes\": [" + number(axes[0]) + ", " +
-        number(axes[1]) + ", " + number(axes[2]) + "], \"principal_axes\": [" +
-        fmt::format("[{}, {}, {}], [{}, {}, {}], [{}, {}, {}]", number(V(0, 0)), number(V(0, 1)),
-                    number(V(0, 2)), number(V(1, 0)), number(V(1, 1)), number(V(1, 2)),
-                    number(V(2, 0)), number(V(2, 1)), number(V(2, 2))) +
-        "], \"visual\": " + visual_json(b.visual, values) + "}");
-  }
-  const Eigen::Vector3d center = 0.5 * (low + high);
-  const double extent = std::max({0.5 * (high - low).norm(), 2 * largest, 1e-3});
-  std::vector<std::string> particles;
-  for (const Particle& p : system.particles) {
-    particles.push_back("{\"name\": " + unidyn::quoted(p.name) +
-                        ", \"radius\": " + number(0.04 * extent) + "}");
-  }
-  return fmt::format(
-      "{{\"extent\": {}, \"center\": [{}, {}, {}], \"lowest\": {}, \"bodies\": [{}], "
-      "\"particles\": [{}], \"forces\": {}}}",
-      number(extent), number(center[0]), number(center[1]), number(center[2]), number(low[2]),
-      fmt::join(bodies, ", "), fmt::join(particles, ", "), json_names(run.force_owners));
 }
 
 // s with every "</" of a closing tag inside a <script> written "<\/" (the same text to JSON and

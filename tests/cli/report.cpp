@@ -128,6 +128,13 @@ TEST(Report, EquilibriaInThePage) {
     ++stable;
   }
   EXPECT_EQ(stable, 2u);  // ±acos(−g/(R0 Ω²)); the top and bottom are unstable
+  // their eigenvalues ±iω, ω² = Ω² − g²/(R0² Ω²) = 29.43 (Ω² = 2 g/R0 here): ω = 5.42494
+  std::size_t oscillating = 0;
+  for (std::size_t at = hoop.find("\"eigenvalues\": [\"0\u00b15.42494i\"]");
+       at != std::string::npos; at = hoop.find("\"eigenvalues\": [\"0\u00b15.42494i\"]", at + 1)) {
+    ++oscillating;
+  }
+  EXPECT_EQ(oscillating, 2u);
   ASSERT_EQ(run("report block-incline --t-end 1 -o '" + page + "'").status, 0);
   EXPECT_TRUE(contains(read_file(page),
                        "\"equilibria\": {\"not_sought\": \"constraint 'plane' has friction"));

@@ -121,7 +121,8 @@ function displayable(tex) {
       '. Coordinates in the order: ' + data.model.coordinates.join(', ') + '.'));
     const table = element('table', { class: 'parameters' });
     table.append(element('tr', {}, element('th', {}, '#'), element('th', {}, 'coordinates'),
-      element('th', {}, 'stability'), element('th', {}, 'potential')));
+      element('th', {}, 'stability'), element('th', {}, 'eigenvalues of the linearisation'),
+      element('th', {}, 'potential')));
     const shown = found.items.slice(0, 12);
     shown.forEach((e, k) => {
       const potential = e.potential_minimum === null ? '' :
@@ -129,7 +130,9 @@ function displayable(tex) {
       table.append(element('tr', {}, element('td', {}, String(k + 1)),
         element('td', {}, e.coordinates.join(', ') +
           (e.continuum ? ` (on a ${e.continuum}-dimensional continuum)` : '')),
-        element('td', { title: e.reason }, e.stability), element('td', {}, potential)));
+        element('td', { title: e.reason }, e.stability),
+        element('td', { class: 'eigenvalues' }, e.eigenvalues.join(', ')),
+        element('td', {}, potential)));
     });
     s.append(table);
     if (found.items.length > shown.length) {
