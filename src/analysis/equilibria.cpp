@@ -9,6 +9,7 @@
 
 #include "energy_minimum.hpp"
 #include "steady_balance.hpp"
+#include "tape_derivatives.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {
@@ -92,39 +93,6 @@ Tape momentum_tape(const System& system, const std::vector<Index>& cyclic) {
   return Tape::compile(momenta, tape_inputs(system, false));
 }
 
-// The tape's inputs at a state.
-std::vector<double> tape_inputs_at(double t, const VectorXd& q, const VectorXd& qdot,
-                                   const std::vector<double>& parameters) {
-  std::vector<double> inputs{t};
-  inputs.insert(inputs.end(), q.begin(), q.end());
-  inputs.insert(inputs.end(), qdot.begin(), qdot.end());
-  inputs.insert(inputs.end(), parameters.begin(), parameters.end());
-  return inputs;
-}
-
-// A tape's outputs and their derivatives along input `input`.
-std::pair<std::vector<double>, std::vector<double>> along(const Tape& tape,
-                                                          const std::vector<double>& inputs,
-                                                          std::size_t input) {
-  std::vector<double> seed(inputs.size(), 0.0), value(tape.output_count()),
-      tangent(tape.output_count());
-  seed[input] = 1.0;
-  TapeWorkspace workspace;
-  tape.evaluate_tangent(inputs, seed, value, tangent, workspace);
-  return {value, tangent};
-}
-
-// ∂p/∂q at a point: one row per output of the momenta's tape.
-MatrixXd momentum_derivative(const Tape& momentum, const OperatingPoint& point) {
-  const std::vector<double> inputs = tape_inputs_at(point.t, point.q, point.qdot, point.parameters);
-  MatrixXd out(static_cast<Index>(momentum.output_count()), point.q.size());
-  for (Index i = 0; i < point.q.size(); ++i) {
-    const auto tangent = along(momentum, inputs, static_cast<std::size_t>(1 + i)).second;
-    out.col(i) = Eigen::Map<const VectorXd>(tangent.data(), out.rows());
-  }
-  return out;
-}
-
 // The values given, held during the search: coordinates and rates (0 when not given; a
 // coordinate not given starts at the model's initial value), and the momenta of cyclic ones.
 struct GivenState {
@@ -142,10 +110,7 @@ GivenState given_state(const System& system, const std::vector<GivenValue>& give
   const auto is_cyclic = [&](Index i) {
     return std::find(cyclic.begin(), cyclic.end(), i) != cyclic.end();
   };
-  GiNaC::exmap values;
-  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
-    values[system.parameters[k].symbol] = parameters[k];
-  }
+  const GiNaC::exmap values = system.parameter_values(parameters);
   GivenState out{VectorXd::Zero(n), VectorXd::Zero(n),
                  std::vector<bool>(static_cast<std::size_t>(n), false),
                  std::vector<bool>(static_cast<std::size_t>(n), false),
@@ -212,11 +177,11 @@ void choose_unknowns(SteadyBalance& balance, const GivenState& held,
     for (Index c = 0; c < m; ++c) constrained = constrained || constraints0[c * n + i] != 0.0;
     if (!constrained) continue;
     balance.free_rate.push_back(i);
-    const auto zero = [](const std::vector<double>& v) {
-      return std::all_of(v.begin(), v.end(), [](double x) { return x == 0.0; });
+    // whether the equations depend on the coordinate at the start
+    const auto nowhere = [&](const Tape& tape) {
+      return derivatives(tape, inputs0, 1 + i, 1).derivative.isZero(0.0);
     };
-    if (zero(along(compiled.dynamics(), inputs0, static_cast<std::size_t>(1 + i)).second) &&
-        zero(along(compiled.constraint_tape(), inputs0, static_cast<std::size_t>(1 + i)).second)) {
+    if (nowhere(compiled.dynamics()) && nowhere(compiled.constraint_tape())) {
       balance.free_acceleration.push_back(i);
     }
   }
@@ -376,9 +341,14 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
       e.continuum = nullity > ignorable_free ? nullity - ignorable_free : 0;
     }
     // Lagrange–Dirichlet at rest, Routh with cyclic coordinates
-    e.potential_minimum =
-        energy_minimum(e.linearization, e.point, cyclic,
-                       cyclic.empty() ? MatrixXd(0, n) : momentum_derivative(momenta, e.point));
+    e.potential_minimum = energy_minimum(
+        e.linearization, e.point, cyclic,
+        cyclic.empty()
+            ? MatrixXd(0, n)
+            : derivatives(momenta,
+                          tape_inputs_at(e.point.t, e.point.q, e.point.qdot, e.point.parameters), 1,
+                          n)
+                  .derivative);
     e.amended = !cyclic.empty();
     found.push_back(std::move(e));
   }

@@ -185,10 +185,7 @@ std::optional<ExprMatrix> exact_state_matrix(const System& system, const Equatio
   if (system.constraints.empty()) return std::nullopt;
   const auto& q = system.coordinates();
   const std::size_t n = q.size();
-  GiNaC::exmap values;
-  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
-    values[system.parameters[k].symbol] = point.parameters[k];
-  }
+  const GiNaC::exmap values = system.parameter_values(point.parameters);
   const std::optional<GiNaC::exmap> at_point = exact_point(system, eq, given, point, values);
   if (!at_point) return std::nullopt;
   const GiNaC::exmap& at = *at_point;
@@ -252,11 +249,12 @@ std::optional<ExprMatrix> exact_state_matrix(const System& system, const Equatio
   }
   // 3. δq̈ = D [δq; δq̇]
   const matrix D = solved(kkt, right).mul_scalar(-1);
-  const std::vector<std::size_t> all_coordinates = others(n, {});
-  const matrix D_q = rows(columns(D, all_coordinates), all_coordinates);
-  std::vector<std::size_t> rate_columns;
-  for (std::size_t j = 0; j < n; ++j) rate_columns.push_back(n + j);
-  const matrix D_u = rows(columns(D, rate_columns), all_coordinates);
+  const auto block = [&](std::size_t first_column) {
+    return make_matrix(n, n, [&](std::size_t i, std::size_t j) {
+      return D(static_cast<unsigned>(i), static_cast<unsigned>(first_column + j));
+    });
+  };
+  const matrix D_q = block(0), D_u = block(n);
   // 2. P_q, P_u and R with the numeric linearisation's dependent coordinates and rates
   const std::vector<std::size_t> dependent_q = indices_of(system, L.dependent_coordinates),
                                  dependent_u = indices_of(system, L.dependent_rates);

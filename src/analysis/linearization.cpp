@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "tape_derivatives.hpp"
 #include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/numeric/number_text.hpp"
 
@@ -24,29 +25,6 @@ constexpr double kPreferredEnough = 1e-6;
 template <class Derived>
 double largest(const Eigen::MatrixBase<Derived>& x) {
   return x.size() == 0 ? 0.0 : x.cwiseAbs().maxCoeff();
-}
-
-// A tape's outputs at the point and their derivatives along its first `directions` inputs
-// (t, then the coordinates, then the rates): derivative.col(d) = ∂outputs/∂input_d.
-struct TapeDerivatives {
-  VectorXd value;
-  MatrixXd derivative;
-};
-
-TapeDerivatives derivatives(const Tape& tape, const std::vector<double>& inputs, Index directions) {
-  TapeDerivatives out{VectorXd(static_cast<Index>(tape.output_count())),
-                      MatrixXd(static_cast<Index>(tape.output_count()), directions)};
-  TapeWorkspace workspace(tape);
-  std::vector<double> seed(inputs.size(), 0.0), value(tape.output_count()),
-      tangent(tape.output_count());
-  for (Index d = 0; d < directions; ++d) {
-    seed[static_cast<std::size_t>(d)] = 1.0;
-    tape.evaluate_tangent(inputs, seed, value, tangent, workspace);
-    seed[static_cast<std::size_t>(d)] = 0.0;
-    out.derivative.col(d) = Eigen::Map<const VectorXd>(tangent.data(), out.value.size());
-  }
-  out.value = Eigen::Map<const VectorXd>(value.data(), out.value.size());
-  return out;
 }
 
 // A rows × cols matrix stored row by row in v from `offset`.
@@ -145,13 +123,11 @@ ReducedSystem reduced_system(const CompiledSystem& compiled, const OperatingPoin
   ReducedSystem out;
 
   // 1. Values and derivatives along t, each coordinate and each rate.
-  std::vector<double> inputs{point.t};
-  inputs.insert(inputs.end(), point.q.begin(), point.q.end());
-  inputs.insert(inputs.end(), point.qdot.begin(), point.qdot.end());
-  inputs.insert(inputs.end(), point.parameters.begin(), point.parameters.end());
+  const std::vector<double> inputs = tape_inputs_at(point.t, point.q, point.qdot, point.parameters);
   const Index directions = 1 + 2 * n;
-  const TapeDerivatives dynamics = derivatives(compiled.dynamics(), inputs, directions);
-  const TapeDerivatives constraints = derivatives(compiled.constraint_tape(), inputs, directions);
+  const TapeDerivatives dynamics = derivatives(compiled.dynamics(), inputs, 0, directions);
+  const TapeDerivatives constraints =
+      derivatives(compiled.constraint_tape(), inputs, 0, directions);
   out.M = row_major(dynamics.value, 0, n, n);
   out.f = dynamics.value.segment(n * n, n);
   out.A_all = row_major(dynamics.value, n * n + n, m, n);

@@ -84,10 +84,7 @@ std::vector<GivenValue> parse_given_values(const System& system,
 }
 
 void expect_smooth_contacts(const System& system, const std::vector<double>& parameters) {
-  GiNaC::exmap values;
-  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
-    values[system.parameters[k].symbol] = parameters[k];
-  }
+  const GiNaC::exmap values = system.parameter_values(parameters);
   for (const Constraint& c : system.constraints) {
     if (!c.friction) continue;
     for (const Expr& mu : {c.friction->dynamic_coefficient, c.friction->static_coefficient}) {
@@ -107,10 +104,7 @@ OperatingPoint operating_point(const System& system, const CompiledSystem& compi
   const std::size_t n = system.coordinates().size(), m = system.constraints.size();
   expect_smooth_contacts(system, parameters);
   // The values given, at the parameters' values.
-  GiNaC::exmap values;
-  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
-    values[system.parameters[k].symbol] = parameters[k];
-  }
+  const GiNaC::exmap values = system.parameter_values(parameters);
   SimulationStart start;
   start.parameters = parameters;
   start.q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));

@@ -1,6 +1,8 @@
 // The balance of a steady motion and its Jacobian.
 #include "steady_balance.hpp"
 
+#include "tape_derivatives.hpp"
+
 namespace unidyn {
 namespace {
 
@@ -49,10 +51,7 @@ VectorXd SteadyBalance::residual(const VectorXd& x, MatrixXd* J) const {
   const State s = state(x);
   const Tape& dynamics = compiled.dynamics();
   const Tape& constraints = compiled.constraint_tape();
-  std::vector<double> inputs{t};
-  inputs.insert(inputs.end(), s.q.begin(), s.q.end());
-  inputs.insert(inputs.end(), s.qdot.begin(), s.qdot.end());
-  inputs.insert(inputs.end(), parameters.begin(), parameters.end());
+  const std::vector<double> inputs = tape_inputs_at(t, s.q, s.qdot, parameters);
   std::vector<double> seed(inputs.size(), 0.0);
   Outputs value{std::vector<double>(dynamics.output_count()),
                 std::vector<double>(constraints.output_count()),

@@ -145,4 +145,10 @@ GiNaC::exmap System::parameter_values() const {
   return map;
 }
 
+GiNaC::exmap System::parameter_values(const std::vector<double>& values) const {
+  GiNaC::exmap map;
+  for (std::size_t k = 0; k < parameters.size(); ++k) map[parameters[k].symbol] = values[k];
+  return map;
+}
+
 }  // namespace unidyn

@@ -30,10 +30,7 @@ std::string visual_json(const BodyVisual& visual, const GiNaC::exmap& values) {
 // sphere, and the box the motion stays in.
 std::string scene_json(const ReportModel& model, const ReportRun& run) {
   const System& system = model.system;
-  GiNaC::exmap values;
-  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
-    values[system.parameters[k].symbol] = model.parameters[k];
-  }
+  const GiNaC::exmap values = system.parameter_values(model.parameters);
   // the box the centres and particles stay in
   Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
   const auto column = [&](const std::string& name) {

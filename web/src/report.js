@@ -71,11 +71,10 @@ for (const [id, title] of [['motion', 'Motion'], ['run', 'Run'], ['phase', 'Phas
   sections[id] = element('section', { id }, element('h2', {}, title));
   app.append(sections[id]);
 }
-const section = (title, id) => sections[id];
 
 // --- The model: parameters, coordinates ---------------------------------------------------------
 {
-  const s = section('Model', 'model');
+  const s = sections.model;
   const table = element('table', { class: 'parameters' });
   table.append(element('tr', {}, element('th', {}, 'parameter'), element('th', {}, 'value')));
   for (const [name, value] of data.model.parameters) {
@@ -96,7 +95,7 @@ function displayable(tex) {
     .replace(/\\end\{align\}/g, '\\end{aligned}');
 }
 {
-  const s = section('Equations of motion', 'equations');
+  const s = sections.equations;
   for (const block of data.equations.latex) {
     const div = element('div', { class: 'math' });
     div.innerHTML = katex.renderToString(displayable(block), {
@@ -110,7 +109,7 @@ function displayable(tex) {
 
 // --- The equilibria (`unidyn equilibria`): each with its verdict -------------------------------
 {
-  const s = section('Equilibria', 'equilibria');
+  const s = sections.equilibria;
   const found = data.equilibria;
   if (found.not_sought !== undefined) {
     s.append(element('p', { class: 'note' }, `Not sought: ${found.not_sought}`));
@@ -197,7 +196,7 @@ function plot(parent, title, names) {
   charts.push(chart);
 }
 {
-  const s = section('Run', 'run');
+  const s = sections.run;
   s.append(element('pre', {}, run.summary));
   if (run.events.length) {
     const list = element('ul', { class: 'events' });
@@ -210,7 +209,7 @@ function plot(parent, title, names) {
 // --- Phase portraits: each coordinate against its rate, the animation's point on it ------------
 const portraits = [];
 {
-  const s = section('Phase portraits', 'phase');
+  const s = sections.phase;
   const row = element('div', { class: 'portraits' });
   s.append(row);
   for (const q of data.model.coordinates) {
@@ -240,6 +239,7 @@ const portraits = [];
   const change = () => {
     chosen.x = run.columns[across.value];
     chosen.y = run.columns[up.value];
+    chosen.ranges = null;
     drawPortrait(chosen, index);
   };
   across.addEventListener('change', change);
@@ -249,7 +249,8 @@ const portraits = [];
   portraits.push(chosen);
 }
 
-function drawPortrait({ canvas, x, y }, index) {
+function drawPortrait(portrait, index) {
+  const { canvas, x, y } = portrait;
   const ctx = canvas.getContext('2d');
   const w = canvas.width, h = canvas.height, pad = 12;
   const range = (v) => {
@@ -257,7 +258,9 @@ function drawPortrait({ canvas, x, y }, index) {
     if (hi - lo < 1e-12) { lo -= 1; hi += 1; }
     return [lo, hi];
   };
-  const [x0, x1] = range(x), [y0, y1] = range(y);
+  // the ranges once per pair of columns, not at every frame
+  if (!portrait.ranges) portrait.ranges = [range(x), range(y)];
+  const [[x0, x1], [y0, y1]] = portrait.ranges;
   const px = (v) => pad + (v - x0) / (x1 - x0) * (w - 2 * pad);
   const py = (v) => h - pad - (v - y0) / (y1 - y0) * (h - 2 * pad);
   ctx.fillStyle = '#fff';
@@ -273,7 +276,7 @@ function drawPortrait({ canvas, x, y }, index) {
 }
 
 // --- The run in 3-D: particles as spheres, bodies as their ellipsoids of inertia ---------------
-const scene3d = section('Motion', 'motion');
+const scene3d = sections.motion;
 const controls = element('div', { class: 'controls' });
 const play = element('button', {}, 'Pause');
 const slider = element('input', { type: 'range', min: 0, max: time.length - 1, value: 0 });
@@ -334,14 +337,26 @@ function shapeGeometry({ shape, dimensions: d }) {
   }
 }
 
+// A line along the whole path of a point (x, y, z columns), shown up to the instant.
+function trailLine(columns, color) {
+  const points = [];
+  for (let j = 0; j < time.length; ++j) {
+    const p = toView(columns[0][j], columns[1][j], columns[2][j]);
+    points.push(p.x, p.y, p.z);
+  }
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new Float32BufferAttribute(points, 3));
+  return new Line(geometry, new LineBasicMaterial({ color }));
+}
+
 const actors = [];
 data.scene.particles.forEach((p, k) => {
   const mesh = new Mesh(new SphereGeometry(p.radius, 24, 16),
     new MeshStandardMaterial({ color: palette[k % palette.length] }));
   scene.add(mesh);
-  const trail = new Line(new BufferGeometry(), new LineBasicMaterial({ color: palette[k % palette.length] }));
-  scene.add(trail);
   const columns = ['x', 'y', 'z'].map((c) => run.columns[`${p.name}.${c}`]);
+  const trail = trailLine(columns, palette[k % palette.length]);
+  scene.add(trail);
   actors.push({ kind: 'particle', mesh, trail, columns });
 });
 data.scene.bodies.forEach((b, k) => {
@@ -364,10 +379,9 @@ data.scene.bodies.forEach((b, k) => {
   frame.visible = false;
   group.add(frame);
   scene.add(group);
-  const trail = new Line(new BufferGeometry(),
-    new LineBasicMaterial({ color: palette[(k + 3) % palette.length] }));
-  scene.add(trail);
   const columns = ['x', 'y', 'z', 'e0', 'e1', 'e2', 'e3'].map((c) => run.columns[`${b.name}.${c}`]);
+  const trail = trailLine(columns, palette[(k + 3) % palette.length]);
+  scene.add(trail);
   actors.push({ kind: 'body', group, frame, trail, columns });
 });
 // The constraint forces as arrows from the particle or body's centre, the largest a quarter of the
@@ -387,7 +401,6 @@ for (const a of arrows) {
 }
 // the book's frame in three's: a rotation taking (x, y, z) to (x, z, −y)
 const bookToView = new Quaternion().setFromAxisAngle(new Vector3(1, 0, 0), -Math.PI / 2);
-scene.rotation.set(0, 0, 0);
 // A body that travels far from its size (a rolling disk) is followed by the camera, close enough
 // to see it; otherwise the camera takes in the whole motion.
 const bodySize = Math.max(0, ...data.scene.bodies.map((b) => Math.max(...b.semi_axes)));
@@ -417,12 +430,7 @@ function show(k) {
   for (const actor of actors) {
     const v = actor.columns.map((c) => c[k]);
     // the path so far
-    const points = [];
-    for (let j = 0; j <= k; ++j) {
-      const p = toView(actor.columns[0][j], actor.columns[1][j], actor.columns[2][j]);
-      points.push(p.x, p.y, p.z);
-    }
-    actor.trail.geometry.setAttribute('position', new Float32BufferAttribute(points, 3));
+    actor.trail.geometry.setDrawRange(0, k + 1);
     if (actor.kind === 'particle') {
       actor.mesh.position.copy(toView(v[0], v[1], v[2]));
     } else {

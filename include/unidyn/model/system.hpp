@@ -250,6 +250,8 @@ struct System {
   Expr kinetic_energy() const;
   // The parameters' values as a substitution (for numeric checks).
   GiNaC::exmap parameter_values() const;
+  // The parameters' symbols at `values` (one per parameter, in order: a run's, with --set).
+  GiNaC::exmap parameter_values(const std::vector<double>& values) const;
 
  private:
   // axial(Q̇ Qᵀ) of body b, not yet simplified.
