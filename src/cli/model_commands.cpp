@@ -440,6 +440,10 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
       "report", "One offline HTML page of a model and a run: equations, plots, the motion in 3-D");
   run_options(c.report);
   c.report->add_option("-o,--output", c.output, "HTML file (default: MODEL's name.html)");
+  c.report->add_option("--at", c.at,
+                       "NAME=VALUE of the operating point whose linearisation and modes the page "
+                       "shows, as `unidyn modes --at` (default: the initial state when it is an "
+                       "equilibrium or steady motion, else the first equilibrium found)");
 
   c.check = app.add_subcommand("check", "Newton vs Lagrange agreement, constraint consistency");
   c.check->add_option("model", c.model, "MODEL file or bundled model name")->required();

@@ -31,6 +31,7 @@ struct ModelCommands {
   bool poses =
       false;  // simulate: each body's centre and Euler parameters, each particle's position
   std::string evaluation = "native";  // simulate: native (when a compiler is present) or tape
+  std::vector<std::string> at;  // report: NAME=VALUE of the operating point to linearise about
 };
 
 void add_model_commands(CLI::App& app, ModelCommands& commands);

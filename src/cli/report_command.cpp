@@ -6,8 +6,11 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
+#include "analysis_report.hpp"
 #include "simulation_setup.hpp"
+#include "unidyn/analysis/exact_state_matrix.hpp"
 #include "unidyn/equations/equivalence.hpp"
 #include "unidyn/equations/newton.hpp"
 #include "unidyn/numeric/constraint_forces.hpp"
@@ -26,6 +29,61 @@ std::string check_text(const System& system, const EquationsOfMotion& lagrange) 
       "the residuals simplify to 0: {}; at {} random states the largest relative residual is "
       "{:.3g}",
       report.symbolic_zero ? "yes" : "NO", report.states, report.numeric_relative_residual);
+}
+
+// The linearisation about a point and its modes, for the page: ẋ = A x as `modes --format latex`
+// writes it (its comments, which the page shows as a table, left out).
+ReportOperatingPoint linearised(const std::string& label, const System& system,
+                                const EquationsOfMotion& lagrange, const OperatingPoint& point,
+                                const Linearization& linearization,
+                                const std::vector<GivenValue>& given) {
+  const ExactLinearization exact{exact_second_order(system, lagrange, given),
+                                 exact_state_matrix(system, lagrange, given, point, linearization)};
+  std::string latex;
+  std::istringstream lines(analysis_latex(system, point, linearization, nullptr, exact));
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.starts_with("%")) latex += line + "\n";
+  }
+  return {label, latex, linearization.coordinates, analyse_modes(linearization)};
+}
+
+// The point the page linearises about: the one given with --at (bad input when it is not an
+// operating point); else the initial state, when it is an equilibrium or a steady motion; else
+// the first equilibrium found. Without one, why not.
+void add_operating_point(ReportModel& report, const ModelCommands& c, const System& system,
+                         const CompiledSystem& compiled, const SimulationStart& start) {
+  if (!c.at.empty()) {
+    const std::vector<GivenValue> given = parse_given_values(system, c.at);
+    const OperatingPoint point = operating_point(system, compiled, given, start.parameters);
+    report.operating_point = linearised(
+        "the operating point given: " + printable(fmt::format("{}", fmt::join(c.at, ", "))), system,
+        report.equations, point, linearize(system, compiled, point), given);
+    return;
+  }
+  std::vector<GivenValue> initial;
+  const auto& q = system.coordinates();
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    initial.push_back({q[i].name, given_number(start.q[k])});
+    initial.push_back({"der(" + q[i].name + ")", given_number(start.qdot[k])});
+  }
+  try {
+    const OperatingPoint point = operating_point(system, compiled, initial, start.parameters);
+    report.operating_point = linearised("the initial state", system, report.equations, point,
+                                        linearize(system, compiled, point), initial);
+    return;
+  } catch (const std::exception& e) {
+    report.no_operating_point = std::string("the initial state is not one: ") + e.what();
+  }
+  if (report.equilibria && !report.equilibria->equilibria.empty()) {
+    const Equilibrium& first = report.equilibria->equilibria.front();
+    std::vector<GivenValue> given;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      given.push_back({q[i].name, given_number(first.point.q[static_cast<Eigen::Index>(i)])});
+    }
+    report.operating_point = linearised("the first equilibrium found", system, report.equations,
+                                        first.point, first.linearization, given);
+  }
 }
 
 }  // namespace
@@ -85,7 +143,8 @@ int run_report(const ModelCommands& c, const CommandModel& model) {
 
   // the equations and their check
   const EquationsOfMotion lagrange = lagrange_equations(system);
-  ReportModel report{system, lagrange, start.parameters, check_text(system, lagrange), {}, 0, ""};
+  ReportModel report{system, lagrange, start.parameters, check_text(system, lagrange), {}, 0, "",
+                     {},     ""};
   // the equilibria, from fewer starts than `unidyn equilibria` takes: a page is made in seconds
   EquilibriumSearch search;
   search.starts = report.equilibrium_starts = 100;
@@ -94,6 +153,7 @@ int run_report(const ModelCommands& c, const CommandModel& model) {
   } catch (const std::invalid_argument& e) {
     report.equilibria_not_sought = e.what();
   }
+  add_operating_point(report, c, system, compiled, start);
   const std::string page = report_page(report, run, *assets);
   file << page;
   file.close();

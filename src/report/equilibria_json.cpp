@@ -11,21 +11,20 @@
 namespace unidyn {
 namespace {
 
-// The linearisation's eigenvalues as text: "-0.38±3.87i" for each complex pair (analysis/modes),
-// six significant digits, real parts within the verdict's tolerance of 0 written 0.
+// The linearisation's eigenvalues as text.
 std::string eigenvalues_json(const ModeAnalysis& modes) {
   std::vector<std::string> out;
-  for (const Mode& mode : modes.modes) {
-    const double re =
-        std::abs(mode.eigenvalue.real()) <= modes.tolerance ? 0.0 : mode.eigenvalue.real();
-    const double im = std::abs(mode.eigenvalue.imag());
-    out.push_back(im == 0.0 ? fmt::format("{:.6g}", re)
-                            : fmt::format("{:.6g}\u00b1{:.6g}i", re, im));
-  }
+  for (const Mode& mode : modes.modes) out.push_back(eigenvalue_text(mode, modes.tolerance));
   return json_names(out);
 }
 
 }  // namespace
+
+std::string eigenvalue_text(const Mode& mode, double tolerance) {
+  const double re = std::abs(mode.eigenvalue.real()) <= tolerance ? 0.0 : mode.eigenvalue.real();
+  const double im = std::abs(mode.eigenvalue.imag());
+  return im == 0.0 ? fmt::format("{:.6g}", re) : fmt::format("{:.6g}\u00b1{:.6g}i", re, im);
+}
 
 // The equilibria found: for each its coordinates (an ignorable one "any"), verdict and reason,
 // eigenvalues, the dimension of a continuum it lies on, and the energy method's word.

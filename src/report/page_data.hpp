@@ -16,11 +16,19 @@ std::string page_number(double x);
 // ["a", "b"].
 std::string json_names(const std::vector<std::string>& names);
 
+// An eigenvalue as text: "-0.38±3.87i" for a complex pair (one of each is listed, analysis/modes),
+// six significant digits, a real part within `tolerance` of 0 written 0.
+std::string eigenvalue_text(const Mode& mode, double tolerance);
+
 // The 3-D scene: the bodies' shapes, the particles' spheres, the box the motion stays in, the
 // owners of the constraint forces drawn.
 std::string scene_json(const ReportModel& model, const ReportRun& run);
 
 // The equilibria found (or why none were sought), each with its verdict and eigenvalues.
 std::string equilibria_json(const ReportModel& model);
+
+// The linearisation about the operating point (or why there is none): its label, LaTeX, modes
+// with their frequencies, damping ratios and shapes, and the verdict.
+std::string operating_point_json(const ReportModel& model);
 
 }  // namespace unidyn

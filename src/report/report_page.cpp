@@ -211,6 +211,7 @@ std::string report_page(const ReportModel& model, const ReportRun& run, const We
                            ",\n\"equations\": " + equations_json(model) +
                            ",\n\"run\": " + run_json(model.system, run) +
                            ",\n\"equilibria\": " + equilibria_json(model) +
+                           ",\n\"operating_point\": " + operating_point_json(model) +
                            ",\n\"scene\": " + scene_json(model, run) + "}";
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
          "<meta name=\"generator\" content=\"unidyn report\">\n<title>" +

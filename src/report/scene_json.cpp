@@ -7,6 +7,7 @@
 
 #include "page_data.hpp"
 #include "unidyn/io/json_text.hpp"
+#include "unidyn/report/constraint_surfaces.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {
@@ -22,12 +23,33 @@ std::string visual_json(const BodyVisual& visual, const GiNaC::exmap& values) {
          "], \"color\": " + unidyn::quoted(visual.color) + "}";
 }
 
+// [x, y, z].
+std::string vector_json(const Eigen::Vector3d& v) {
+  return "[" + page_number(v[0]) + ", " + page_number(v[1]) + ", " + page_number(v[2]) + "]";
+}
+
+// The planes and spheres the constraints hold points on (report/constraint_surfaces.hpp).
+std::string surfaces_json(const ReportModel& model) {
+  std::vector<std::string> out;
+  for (const ConstraintSurface& s : constraint_surfaces(model.system, model.parameters)) {
+    const bool plane = s.kind == ConstraintSurface::Kind::plane;
+    out.push_back("{\"constraint\": " + unidyn::quoted(s.constraint) +
+                  ", \"point\": " + unidyn::quoted(s.point) +
+                  (plane ? ", \"kind\": \"plane\", \"normal\": " + vector_json(s.normal) +
+                               ", \"offset\": " + page_number(s.offset)
+                         : ", \"kind\": \"sphere\", \"center\": " + vector_json(s.center) +
+                               ", \"radius\": " + page_number(s.radius)) +
+                  "}");
+  }
+  return fmt::format("[{}]", fmt::join(out, ", "));
+}
+
 }  // namespace
 
 // The 3-D scene: each body's shape (its `visual:` or inertia shape) and its ellipsoid of inertia
 // (the uniform ellipsoid with its mass and principal moments: a² = 5 (B + C − A)/(2m) and
 // cyclically, along its principal axes in the body basis) for a body without one, each particle's
-// sphere, and the box the motion stays in.
+// sphere, the box the motion stays in, and the constraints' planes and spheres.
 std::string scene_json(const ReportModel& model, const ReportRun& run) {
   const System& system = model.system;
   const GiNaC::exmap values = system.parameter_values(model.parameters);
@@ -90,10 +112,10 @@ std::string scene_json(const ReportModel& model, const ReportRun& run) {
   }
   return fmt::format(
       "{{\"extent\": {}, \"center\": [{}, {}, {}], \"lowest\": {}, \"bodies\": [{}], "
-      "\"particles\": [{}], \"forces\": {}}}",
+      "\"particles\": [{}], \"forces\": {}, \"surfaces\": {}}}",
       page_number(extent), page_number(center[0]), page_number(center[1]), page_number(center[2]),
       page_number(low[2]), fmt::join(bodies, ", "), fmt::join(particles, ", "),
-      json_names(run.force_owners));
+      json_names(run.force_owners), surfaces_json(model));
 }
 
 }  // namespace unidyn

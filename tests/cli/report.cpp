@@ -73,8 +73,19 @@ TEST_P(Report, DrawsItselfInChromium) {
   if (model == "rolling-disk") {
     EXPECT_GE(count(result, "equilibria"), 1) << result;
   }
-  // the rolling disk's constraint force as an arrow (the others have no constraints)
-  EXPECT_EQ(count(result, "arrows"), model == "rolling-disk" ? 1 : 0) << result;
+  // the constraint force on the pendulum's particle and on the disk as arrows (the top has no
+  // constraints), the pendulum's sphere |r| = L drawn (report/constraint_surfaces.hpp)
+  EXPECT_EQ(count(result, "arrows"), model == "heavy-top" ? 0 : 1) << result;
+  EXPECT_EQ(count(result, "surfaces"), model == "spherical-pendulum-cartesian" ? 1 : 0) << result;
+  // the modes of an operating point: the disk's first equilibrium (upright at rest: θ, ψ̇, θ̇,
+  // φ̇, four eigenvalues, one of each complex pair listed); the top's Euler angles are singular
+  // at its equilibria and its initial state moves: none
+  if (model == "rolling-disk") {
+    EXPECT_GE(count(result, "modes"), 3) << result;
+  }
+  if (model == "heavy-top") {
+    EXPECT_EQ(count(result, "modes"), -1) << result;
+  }
   // each body turned as its Euler parameters say (to float precision: the page's data is float32)
   EXPECT_GE(value(result, "orientation_error"), 0.0) << result;
   EXPECT_LT(value(result, "orientation_error"), 1e-5) << result;
@@ -99,7 +110,8 @@ TEST_P(Report, DrawsItselfInChromium) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, Report,
-                         testing::Values("spherical-pendulum", "heavy-top", "rolling-disk"),
+                         testing::Values("spherical-pendulum-cartesian", "heavy-top",
+                                         "rolling-disk"),
                          [](const auto& parameter) {
                            std::string name = parameter.param;
                            for (char& c : name) c = c == '-' ? '_' : c;
@@ -120,8 +132,11 @@ TEST(Report, TenSecondsUnderTwoMegabytes) {
 TEST(Report, EquilibriaInThePage) {
   const std::string page = temp_path("hoop.html");
   ASSERT_EQ(run("report rotating-hoop --t-end 1 -o '" + page + "'").status, 0);
-  const std::string hoop = read_file(page);
-  EXPECT_TRUE(contains(hoop, "\"equilibria\": {\"starts\": 100")) << hoop.substr(0, 2000);
+  const std::string html = read_file(page);
+  // the page's equilibria, up to the operating point after them
+  const std::size_t from = html.find("\"equilibria\": ");
+  const std::string hoop = html.substr(from, html.find("\n\"operating_point\"", from) - from);
+  EXPECT_TRUE(hoop.starts_with("\"equilibria\": {\"starts\": 100")) << hoop;
   std::size_t stable = 0;
   for (std::size_t at = hoop.find("\"stability\": \"linearly stable\""); at != std::string::npos;
        at = hoop.find("\"stability\": \"linearly stable\"", at + 1)) {
@@ -138,6 +153,44 @@ TEST(Report, EquilibriaInThePage) {
   ASSERT_EQ(run("report block-incline --t-end 1 -o '" + page + "'").status, 0);
   EXPECT_TRUE(contains(read_file(page),
                        "\"equilibria\": {\"not_sought\": \"constraint 'plane' has friction"));
+  std::remove(page.c_str());
+}
+
+// The linearisation the page shows: about the point given with --at, else the initial state when
+// it is an equilibrium, else the first equilibrium found; the bead on the hoop, φ from the top,
+// φ'' = (Ω² cos φ + g/R0) sin φ with Ω² = 2 g/R0: at the top λ² = Ω² + g/R0 = 3 g/R0 = 58.86, at
+// the bottom λ² = Ω² − g/R0 = g/R0 = 19.62, both unstable.
+TEST(Report, ModesOfAnOperatingPoint) {
+  const std::string page = temp_path("hoop-modes.html");
+  const auto operating_point = [&](const std::string& options) {
+    const Outcome made = run("report rotating-hoop --t-end 0.1 -o '" + page + "' " + options);
+    EXPECT_EQ(made.status, 0) << made.err;
+    const std::string html = read_file(page);
+    const std::size_t at = html.find("\"operating_point\": ");
+    return at == std::string::npos ? std::string()
+                                   : html.substr(at, html.find("\n\"scene\"", at) - at);
+  };
+  const std::string top = operating_point("--at phi=0");
+  EXPECT_TRUE(contains(top, "\"label\": \"the operating point given: phi=0\"")) << top;
+  EXPECT_TRUE(contains(top, "\"eigenvalue\": \"7.67203\"")) << top;
+  EXPECT_TRUE(contains(top, "\"eigenvalue\": \"-7.67203\"")) << top;
+  EXPECT_TRUE(contains(top, "\"stability\": \"unstable\"")) << top;
+  // A in the LaTeX (JSON doubles its backslashes)
+  EXPECT_TRUE(contains(top, R"(\\begin{bmatrix} 0 & 1 \\\\ 58.86 & 0 \\end{bmatrix})")) << top;
+  const std::string bottom = operating_point("--set phi0=3.141592653589793");
+  EXPECT_TRUE(contains(bottom, "\"label\": \"the initial state\"")) << bottom;
+  EXPECT_TRUE(contains(bottom, "\"eigenvalue\": \"4.42945\"")) << bottom;
+  // released at φ0 = 2.5 it moves: the first equilibrium's (the table's first row)
+  EXPECT_TRUE(contains(operating_point(""), "\"label\": \"the first equilibrium found\""));
+  // the top's initial state moves and its equilibria are at gimbal lock: why there is none
+  const Outcome top_page = run("report heavy-top --t-end 0.1 -o '" + page + "'");
+  ASSERT_EQ(top_page.status, 0);
+  EXPECT_TRUE(contains(read_file(page),
+                       "\"operating_point\": {\"none\": \"the initial state "
+                       "is not one: the acceleration of theta is"));
+  // a point that is not one, or not a coordinate: bad input
+  EXPECT_EQ(run("report rotating-hoop --at phi=1 -o '" + page + "'").status, 2);
+  EXPECT_EQ(run("report rotating-hoop --at psi=1 -o '" + page + "'").status, 2);
   std::remove(page.c_str());
 }
 

@@ -12,6 +12,7 @@ import {
   ConeGeometry,
   CylinderGeometry,
   DirectionalLight,
+  DoubleSide,
   Float32BufferAttribute,
   GridHelper,
   Group,
@@ -21,6 +22,7 @@ import {
   Mesh,
   MeshStandardMaterial,
   PerspectiveCamera,
+  PlaneGeometry,
   Quaternion,
   Scene,
   SphereGeometry,
@@ -67,7 +69,8 @@ app.append(element('h1', {}, data.model.name));
 if (data.model.reference) app.append(element('p', { class: 'reference' }, data.model.reference));
 const sections = {};
 for (const [id, title] of [['motion', 'Motion'], ['run', 'Run'], ['phase', 'Phase portraits'],
-  ['equations', 'Equations of motion'], ['equilibria', 'Equilibria'], ['model', 'Model']]) {
+  ['equations', 'Equations of motion'], ['equilibria', 'Equilibria'],
+  ['modes', 'Linearisation and modes'], ['model', 'Model']]) {
   sections[id] = element('section', { id }, element('h2', {}, title));
   app.append(sections[id]);
 }
@@ -94,15 +97,23 @@ function displayable(tex) {
     .replace(/\\begin\{align\}/g, '\\begin{aligned}')
     .replace(/\\end\{align\}/g, '\\end{aligned}');
 }
-{
-  const s = sections.equations;
-  for (const block of data.equations.latex) {
-    const div = element('div', { class: 'math' });
-    div.innerHTML = katex.renderToString(displayable(block), {
+// LaTeX as a block of MathML, typeset after the motion's first picture (renderMath).
+const mathJobs = [];
+function mathBlock(tex) {
+  const div = element('div', { class: 'math' });
+  mathJobs.push(() => {
+    div.innerHTML = katex.renderToString(displayable(tex), {
       displayMode: true, output: 'mathml', throwOnError: false, strict: 'ignore',
     });
-    s.append(div);
-  }
+  });
+  return div;
+}
+function renderMath() {
+  for (const job of mathJobs.splice(0)) job();
+}
+{
+  const s = sections.equations;
+  for (const block of data.equations.latex) s.append(mathBlock(block));
   for (const note of data.equations.notes) s.append(element('p', { class: 'note' }, note));
   if (data.equations.check) s.append(element('pre', {}, data.equations.check));
 }
@@ -137,6 +148,34 @@ function displayable(tex) {
     if (found.items.length > shown.length) {
       s.append(element('p', {}, `… and ${found.items.length - shown.length} more (unidyn equilibria lists every one)`));
     }
+  }
+}
+
+// --- The linearisation about an operating point (`unidyn modes`): A, the modes, the verdict -----
+{
+  const s = sections.modes;
+  const point = data.operating_point;
+  if (point.none !== undefined) {
+    s.append(element('p', { class: 'note' }, `No operating point: ${point.none}. ` +
+      'unidyn report MODEL --at NAME=VALUE names one.'));
+  } else {
+    s.append(element('p', {}, `About ${point.label}: x' = A x, the independent coordinates and ` +
+      'rates perturbed (ignorable coordinates dropped).'));
+    s.append(mathBlock(point.latex));
+    const table = element('table', { class: 'parameters' });
+    table.append(element('tr', {}, element('th', {}, 'eigenvalue'),
+      element('th', {}, 'natural frequency (rad/s)'), element('th', {}, 'damping ratio'),
+      element('th', {}, 'shape (modulus, phase)')));
+    for (const m of point.modes) {
+      const shape = m.shape.map(([name, modulus, phase]) =>
+        `${m.of_rates ? `der(${name})` : name}: ${modulus}` + (phase ? ` ∠${phase}°` : '')).join(', ');
+      table.append(element('tr', {}, element('td', { class: 'eigenvalues' }, m.eigenvalue),
+        element('td', {}, m.natural_frequency === null ? '' : m.natural_frequency.toPrecision(6)),
+        element('td', {}, m.damping_ratio === null ? '' : m.damping_ratio.toPrecision(4)),
+        element('td', {}, shape)));
+    }
+    s.append(table);
+    s.append(element('p', {}, `${point.stability}: ${point.reason}`));
   }
 }
 
@@ -290,8 +329,13 @@ const frames = element('input', { type: 'checkbox' });
 const forcesShown = element('input', { type: 'checkbox' });
 forcesShown.checked = true;
 const clock = element('span', { class: 'clock' }, 't = 0');
+const surfacesShown = element('input', { type: 'checkbox' });
+surfacesShown.checked = true;
 controls.append(play, slider, speed, element('label', {}, frames, ' body frames'),
   element('label', {}, forcesShown, ' constraint forces'), clock);
+if (data.scene.surfaces.length > 0) {
+  controls.insertBefore(element('label', {}, surfacesShown, ' surfaces'), clock);
+}
 scene3d.append(controls);
 const view = element('div', { class: 'view' });
 scene3d.append(view);
@@ -318,6 +362,26 @@ grid.position.copy(toView(center[0], center[1], Math.min(0, data.scene.lowest)))
 scene.add(grid);
 const axes = new AxesHelper(0.5 * size);
 scene.add(axes);
+
+// The constraints' planes (a square half the grid's width about the motion) and spheres, translucent.
+const surfaces = data.scene.surfaces.map((s) => {
+  const material = new MeshStandardMaterial({
+    color: '#6a8caf', transparent: true, opacity: 0.2, side: DoubleSide, depthWrite: false,
+  });
+  if (s.kind === 'sphere') {
+    const mesh = new Mesh(new SphereGeometry(s.radius, 48, 32), material);
+    mesh.position.copy(toView(...s.center));
+    return mesh;
+  }
+  const mesh = new Mesh(new PlaneGeometry(2 * size, 2 * size), material);
+  const n = toView(...s.normal);
+  // the point of the plane nearest the motion's centre
+  const c = toView(...center);
+  mesh.position.copy(c.addScaledVector(n, s.offset - n.dot(c)));
+  mesh.quaternion.setFromUnitVectors(new Vector3(0, 0, 1), n);
+  return mesh;
+});
+for (const mesh of surfaces) scene.add(mesh);
 
 // A body's shape in its own basis, centred on its centre of mass, its axis of symmetry along e3
 // (three's shapes of revolution are along their y: turned onto z); the dimensions as the model
@@ -450,6 +514,7 @@ function show(k) {
     a.arrow.setDirection(f.normalize());
     a.arrow.setLength(length, 0.2 * length, 0.1 * length);
   }
+  for (const mesh of surfaces) mesh.visible = surfacesShown.checked;
   followBody();
   slider.value = String(k);
   clock.textContent = `t = ${time[k].toFixed(3)}`;
@@ -495,6 +560,7 @@ speed.addEventListener('change', () => {
 });
 frames.addEventListener('change', () => show(index));
 forcesShown.addEventListener('change', () => show(index));
+surfacesShown.addEventListener('change', () => show(index));
 orbit.addEventListener('change', () => renderer.render(scene, camera));
 function frame() {
   if (playing) {
@@ -515,6 +581,7 @@ show(index);
 // how long the page took to show the motion's first picture (the browser tests print it)
 const readyMilliseconds = performance.now();
 requestAnimationFrame(frame);
+requestAnimationFrame(() => setTimeout(renderMath, 0));
 
 // --- #selftest: what the browser tests check ----------------------------------------------------
 // Whether a canvas has pixels of more than one colour.
@@ -533,6 +600,7 @@ function drawn(canvas) {
   return false;
 }
 function selftest() {
+  renderMath();
   // the 3-D canvas at two times: drawn, and different
   show(0);
   const first = renderer.domElement.toDataURL();
@@ -561,7 +629,9 @@ function selftest() {
     math_errors: document.querySelectorAll('.katex-error').length,
     actors: actors.length,
     arrows: arrows.length,
+    surfaces: surfaces.length,
     equilibria: data.equilibria.items ? data.equilibria.items.length : -1,
+    modes: data.operating_point.modes ? data.operating_point.modes.length : -1,
     ready_ms: Math.round(readyMilliseconds),
   };
   document.body.append(element('pre', { id: 'selftest' }, JSON.stringify(result)));

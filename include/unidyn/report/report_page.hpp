@@ -2,9 +2,11 @@
 // equations of motion in the book's form (rendered as MathML), whether Newton–Euler and Lagrange
 // agree and which velocity constraints are integrable; plots of the run (coordinates, rates,
 // energy and its error, multipliers, outputs, conserved quantities) with its events marked;
-// phase portraits; and the motion in 3-D (particles as spheres, bodies as their ellipsoids of
-// inertia, numeric/poses.hpp). The page's script and style are embedded (report/web_assets.hpp),
-// its data is one JSON object in it: it opens from a file, with no network and no server.
+// phase portraits; the equilibria, and the linearisation and modes about an operating point; and
+// the motion in 3-D (particles as spheres, bodies as their shapes or ellipsoids of inertia,
+// numeric/poses.hpp; the constraints' planes and spheres, report/constraint_surfaces.hpp). The
+// page's script and style are embedded (report/web_assets.hpp), its data is one JSON object in
+// it: it opens from a file, with no network and no server.
 #pragma once
 
 #include <optional>
@@ -13,6 +15,7 @@
 #include <vector>
 
 #include "unidyn/analysis/equilibria.hpp"
+#include "unidyn/analysis/modes.hpp"
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/report/web_assets.hpp"
 
@@ -29,9 +32,19 @@ struct ReportRun {
   std::vector<std::pair<double, std::string>> events;
 };
 
+// The linearisation the page shows (analysis/linearization.hpp, analysis/modes.hpp): what point it
+// is about, ẋ = A x in LaTeX as `unidyn modes --format latex` writes it (and A's closed form where
+// there is one), and the modes, their shapes in `coordinates`.
+struct ReportOperatingPoint {
+  std::string label;
+  std::string latex;
+  std::vector<std::string> coordinates;
+  ModeAnalysis modes;
+};
+
 // What the page says of the model beyond its equations: the Newton–Euler check in words, and its
 // equilibria (analysis/equilibria.hpp) with the starts they were sought from, or why they were
-// not sought.
+// not sought; the linearisation about an operating point, or why there is none.
 struct ReportModel {
   const System& system;
   const EquationsOfMotion& equations;
@@ -40,6 +53,8 @@ struct ReportModel {
   std::optional<EquilibriumSearchResult> equilibria;
   std::size_t equilibrium_starts = 0;
   std::string equilibria_not_sought;
+  std::optional<ReportOperatingPoint> operating_point;
+  std::string no_operating_point;
 };
 
 // The page. Equal input gives the same bytes.
