@@ -5,7 +5,8 @@
 #           Node.js with npm where there is none (the report's web packages come from the npm
 #           registry at build time)
 #   test    run + GoogleTest, Google Benchmark, the benchmark peers the test build compiles, pdflatex,
-#           SymPy, Chromium (the report's browser tests)
+#           SymPy, Chromium (the report's browser tests), pybind11 and Python's numpy, pytest
+#           and pandas (the Python module and its tests)
 #   fuzz    run + clang with libFuzzer (scripts/fuzz.sh)
 #   bench   test (which has Python with SymPy for the side-by-side runs of bench/run.sh)
 #   all     every one of these and clang-format
@@ -20,7 +21,8 @@ run=(
 # tests and micro benchmarks, the peers of bench/ (compiled with them), pdflatex for the LaTeX
 # documents `derive --standalone` writes, and SymPy to read the JSON `derive` writes
 test=(googletest libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev libsimbody-dev
-  texlive-latex-base python3 python3-sympy chromium)
+  texlive-latex-base python3 python3-sympy chromium
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-pandas)
 # Node.js and npm: Debian's, unless the machine has them already (a newer Node.js, say)
 if ! command -v npm >/dev/null 2>&1; then run+=(nodejs npm); fi
 # fuzzing: clang with libFuzzer

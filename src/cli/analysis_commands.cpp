@@ -155,43 +155,59 @@ void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
                       "with --sweep: the CSV file (default: standard output)");
 }
 
-int run_analysis_commands(const AnalysisCommands& c) {
-  if (!c.linearize->parsed() && !c.modes->parsed() && !c.equilibria->parsed()) return -1;
-  const CommandModel model = read_command_model(c.model);
+void write_analysis(std::ostream& out, const std::string& command, const AnalysisCommands& c,
+                    const CommandModel& model) {
   const System& system = model.system;
+  const bool equilibria = command == "equilibria";
   const auto sets = parameter_sets(system, c.sets);
   const std::vector<GivenValue> given =
-      parse_given_values(system, c.at, c.equilibria->parsed() && !c.cyclic.empty());
-  if (!c.sweep.empty() && c.format != "text") {
-    throw std::invalid_argument("--sweep writes CSV: drop --format");
-  }
+      parse_given_values(system, c.at, equilibria && !c.cyclic.empty());
   const EquationsOfMotion equations = lagrange_equations(system);
   const CompiledSystem compiled(system, equations);
-  if (c.equilibria->parsed()) {
+  if (equilibria) {
     const auto found =
         find_equilibria(system, compiled, given, initial_state(system, sets).parameters,
                         {.starts = c.starts, .cyclic = c.cyclic});
-    std::cout << (c.format == "json" ? equilibria_json(system, found)
-                                     : equilibria_text(system, found, c.starts));
-    return 0;
+    out << (c.format == "json" ? equilibria_json(system, found)
+                               : equilibria_text(system, found, c.starts));
+    return;
   }
-  if (!c.sweep.empty()) return run_sweep(c, system, compiled, given, sets);
   const OperatingPoint point =
       operating_point(system, compiled, given, initial_state(system, sets).parameters);
   const Linearization linearization = linearize(system, compiled, point);
-  const bool modes = c.modes->parsed();
+  const bool modes = command == "modes";
   const ModeAnalysis analysis = modes ? analyse_modes(linearization) : ModeAnalysis{};
   const ExactLinearization exact{
       exact_second_order(system, equations, given),
       exact_state_matrix(system, equations, given, point, linearization)};
   if (c.format == "json" || c.format == "latex") {
-    std::cout << (c.format == "json" ? analysis_json : analysis_latex)(
+    out << (c.format == "json" ? analysis_json : analysis_latex)(
         system, point, linearization, modes ? &analysis : nullptr, exact);
-    return 0;
+    return;
   }
-  std::cout << operating_point_text(system, point, linearization)
-            << linearization_text(linearization) << exact_text(system, linearization, exact);
-  if (modes) std::cout << modes_text(linearization, analysis);
+  out << operating_point_text(system, point, linearization) << linearization_text(linearization)
+      << exact_text(system, linearization, exact);
+  if (modes) out << modes_text(linearization, analysis);
+}
+
+int run_analysis_commands(const AnalysisCommands& c) {
+  if (!c.linearize->parsed() && !c.modes->parsed() && !c.equilibria->parsed()) return -1;
+  const CommandModel model = read_command_model(c.model);
+  if (!c.sweep.empty() && c.format != "text") {
+    throw std::invalid_argument("--sweep writes CSV: drop --format");
+  }
+  if (!c.sweep.empty()) {
+    const System& system = model.system;
+    const auto sets = parameter_sets(system, c.sets);
+    const std::vector<GivenValue> given = parse_given_values(system, c.at);
+    const CompiledSystem compiled(system, lagrange_equations(system));
+    return run_sweep(c, system, compiled, given, sets);
+  }
+  write_analysis(std::cout,
+                 c.equilibria->parsed() ? "equilibria"
+                 : c.modes->parsed()    ? "modes"
+                                        : "linearize",
+                 c, model);
   return 0;
 }
 

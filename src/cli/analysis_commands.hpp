@@ -2,6 +2,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,12 @@ struct AnalysisCommands {
 };
 
 void add_analysis_commands(CLI::App& app, AnalysisCommands& commands);
+
+struct CommandModel;
+// The output of `unidyn COMMAND` (linearize, modes or equilibria; not --sweep) with the options
+// in `c`. Throws std::invalid_argument for bad input, NotAnOperatingPoint among it.
+void write_analysis(std::ostream& out, const std::string& command, const AnalysisCommands& c,
+                    const CommandModel& model);
 
 // Runs whichever of the commands was parsed; returns the exit status (0 success, 1 failure, 2 bad
 // input), or -1 when none was.

@@ -37,7 +37,12 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 // The bundled models: $UNIDYN_MODELS or the source tree's models/.
 fs::path models_directory() {
   if (const char* env = std::getenv("UNIDYN_MODELS")) return env;
-  return UNIDYN_MODELS_DIR;
+  // the source tree's, else an installed command's (PREFIX/bin/unidyn: PREFIX/share/unidyn/models)
+  std::error_code error;
+  if (fs::is_directory(UNIDYN_MODELS_DIR, error)) return UNIDYN_MODELS_DIR;
+  const fs::path installed =
+      fs::read_symlink("/proc/self/exe", error).parent_path().parent_path() / "share/unidyn/models";
+  return !error && fs::is_directory(installed, error) ? installed : fs::path(UNIDYN_MODELS_DIR);
 }
 
 std::vector<fs::path> bundled_models() {

@@ -12,7 +12,8 @@ namespace unidyn::cli {
 
 namespace fs = std::filesystem;
 
-// The bundled models' directory: $UNIDYN_MODELS or the source tree's models/; its models, sorted.
+// The bundled models' directory: $UNIDYN_MODELS, else the source tree's models/, else an installed
+// command's PREFIX/share/unidyn/models; its models, sorted.
 fs::path models_directory();
 std::vector<fs::path> bundled_models();
 

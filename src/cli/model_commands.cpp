@@ -52,9 +52,9 @@ EquationFormat parse_format(const std::string& format) {
 }
 
 // (1.21), (8.18): which velocity constraints are integrable, alone and together.
-void write_integrability(const System& system, EquationFormat format) {
+void write_integrability(std::ostream& out, const System& system, EquationFormat format) {
   const std::string prefix = format == EquationFormat::latex ? "% " : "  ";
-  for (const std::string& line : integrability_lines(system)) fmt::print("{}{}\n", prefix, line);
+  for (const std::string& line : integrability_lines(system)) out << prefix << line << '\n';
 }
 
 // The model's name as an identifier for exported functions: its file's stem, other characters as _.
@@ -69,7 +69,8 @@ std::string function_name(const std::string& path) {
 }
 
 // `derive --format c|python|matlab`: the equations as a self-contained function.
-int run_export(const ModelCommands& c, const System& system, const std::string& path) {
+void write_export(std::ostream& out, const ModelCommands& c, const System& system,
+                  const std::string& path) {
   if (c.method != "lagrange" && c.method != "kane") {
     throw std::invalid_argument("--format " + c.format +
                                 " exports M, f, A and b: it needs "
@@ -80,14 +81,16 @@ int run_export(const ModelCommands& c, const System& system, const std::string& 
                                                        : CodeLanguage::matlab;
   const EquationsOfMotion eq =
       c.method == "kane" ? kane_equations(system) : lagrange_equations(system);
-  std::cout << export_code(system, eq, language, function_name(path));
-  return 0;
+  out << export_code(system, eq, language, function_name(path));
 }
 
-int run_derive(const ModelCommands& c, const CommandModel& model) {
+}  // namespace
+
+void write_derivation(std::ostream& out, const ModelCommands& c, const CommandModel& model) {
   const System system = command_system(c, model.system);
   if (c.format == "c" || c.format == "python" || c.format == "matlab") {
-    return run_export(c, system, model.path);
+    write_export(out, c, system, model.path);
+    return;
   }
   const EquationFormat format = parse_format(c.format);
   if (c.form != "textbook" && c.form != "matrix" && c.form != "zees") {
@@ -102,8 +105,7 @@ int run_derive(const ModelCommands& c, const CommandModel& model) {
   }
   // a document pdflatex compiles as it is: the equations' display math in an article
   if (c.standalone) {
-    fmt::print("\\documentclass{{article}}\n\\usepackage{{amsmath}}\n\\begin{{document}}\n");
-    std::fflush(stdout);
+    out << "\\documentclass{article}\n\\usepackage{amsmath}\n\\begin{document}\n" << std::flush;
   }
   if (c.method == "lagrange" || c.method == "kane") {
     // M q̈ = f + Aᵀλ by Lagrange's equations, or through partial velocities (the same M and f):
@@ -112,26 +114,27 @@ int run_derive(const ModelCommands& c, const CommandModel& model) {
         c.method == "kane" ? kane_equations(system) : lagrange_equations(system);
     end_phase("derive (" + c.method + ")");
     if (c.form != "matrix" && format != EquationFormat::json) {
-      write_textbook_lagrange(std::cout, system, eq, format, c.form == "zees");
+      write_textbook_lagrange(out, system, eq, format, c.form == "zees");
     } else {
-      write_lagrange(std::cout, system, eq, format);
+      write_lagrange(out, system, eq, format);
       end_phase("print");
     }
     if (format != EquationFormat::json) {
-      write_integrability(system, format);
+      write_integrability(out, system, format);
       end_phase("integrability of the velocity constraints");
     }
   } else if (c.method == "newton-euler") {
-    write_newton(std::cout, system, newton_equations(system), format);
+    write_newton(out, system, newton_equations(system), format);
   } else if (c.method == "second-form") {
     const EquationsOfMotion eq = lagrange_equations(system);
-    write_second_form(std::cout, system, eq,
-                      lagrange_second_form(system, newton_equations(system), eq), format);
+    write_second_form(out, system, eq, lagrange_second_form(system, newton_equations(system), eq),
+                      format);
   }
-  std::cout.flush();
-  if (c.standalone) fmt::print("\\end{{document}}\n");
-  return 0;
+  if (c.standalone) out << "\\end{document}\n";
+  out.flush();
 }
+
+namespace {
 
 // How far the initial state may be off its constraints for `check` (|Ψ| and |A q' + e|, in the
 // model's own units).
@@ -468,9 +471,12 @@ int run_model_commands(const ModelCommands& c) {
     ~Report() { fmt::print(stderr, "{}", phase_timings_report()); }
   } report;
   try {
-    if (c.derive->parsed()) return run_derive(c, model);
+    if (c.derive->parsed()) {
+      write_derivation(std::cout, c, model);
+      return 0;
+    }
     if (c.simulate->parsed()) return run_simulate(c, model);
-    if (c.report->parsed()) return run_report(c, model);
+    if (c.report->parsed()) return run_report(c, model, std::cout);
     return run_check(c, model);
   } catch (const ExpressionTooLarge& e) {
     // an expansion of the derivation past its budget: point at the model's largest expression

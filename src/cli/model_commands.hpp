@@ -2,10 +2,13 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <ostream>
 #include <string>
 #include <vector>
 
 namespace unidyn::cli {
+
+struct CommandModel;
 
 struct ModelCommands {
   CLI::App* derive = nullptr;
@@ -35,6 +38,10 @@ struct ModelCommands {
 };
 
 void add_model_commands(CLI::App& app, ModelCommands& commands);
+
+// `unidyn derive`'s output for the model (its options in `c`: method, format, form, standalone,
+// reduced). Throws std::invalid_argument for options that do not go together.
+void write_derivation(std::ostream& out, const ModelCommands& c, const CommandModel& model);
 
 // Runs whichever of the commands was parsed; returns the exit status (0 success, 1 the run failed,
 // 2 bad input), or -1 when none of them was.

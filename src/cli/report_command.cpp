@@ -88,7 +88,7 @@ void add_operating_point(ReportModel& report, const ModelCommands& c, const Syst
 
 }  // namespace
 
-int run_report(const ModelCommands& c, const CommandModel& model) {
+int run_report(const ModelCommands& c, const CommandModel& model, std::ostream& out) {
   const std::optional<WebAssets> assets = web_assets();
   if (!assets) {
     throw std::runtime_error(
@@ -130,11 +130,7 @@ int run_report(const ModelCommands& c, const CommandModel& model) {
         const Eigen::Map<const Eigen::VectorXd> lambda(row.data() + lambda_at, m);
         forces.append(row[0], q, qdot, lambda, start.parameters, run.rows.back());
       });
-  run.summary = fmt::format(
-      "{}: {} from t = 0 to {} ({}), {} rows\n", system.name,
-      s.ok ? (s.stopped ? "simulated until stop_when" : "simulated")
-           : "FAILED at t = " + fmt::format("{:.10g}", s.failure_time) + ": " + s.message,
-      options.t_end, options.method, s.rows);
+  run.summary = run_headline(system, options, s);
   if (s.rows > 0) run.summary += run_figures(system, s);
   if (!forces.unavailable().empty()) {
     run.summary += "  constraint forces not drawn: " + forces.unavailable() + "\n";
@@ -158,9 +154,9 @@ int run_report(const ModelCommands& c, const CommandModel& model) {
   file << page;
   file.close();
   if (!file) throw std::runtime_error("cannot write " + printable(path));
-  fmt::print("report of {} written to {} ({:.0f} kB): {} rows{}\n", system.name, printable(path),
-             static_cast<double>(page.size()) / 1024.0, s.rows,
-             s.ok ? "" : ", the run FAILED: " + printable(s.message));
+  out << fmt::format("report of {} written to {} ({:.0f} kB): {} rows{}\n", system.name,
+                     printable(path), static_cast<double>(page.size()) / 1024.0, s.rows,
+                     s.ok ? "" : ", the run FAILED: " + printable(s.message));
   return s.ok ? 0 : 1;
 }
 

@@ -2,13 +2,16 @@
 // (report/report_page.hpp).
 #pragma once
 
+#include <ostream>
+
 #include "command_model.hpp"
 #include "model_commands.hpp"
 
 namespace unidyn::cli {
 
 // 0 when the run succeeded, 1 when it failed (the page shows the rows computed and why it
-// stopped) or the build has no web assets; bad input throws std::invalid_argument.
-int run_report(const ModelCommands& c, const CommandModel& model);
+// stopped) or the build has no web assets; bad input throws std::invalid_argument. What was
+// written goes to `out` in one line.
+int run_report(const ModelCommands& c, const CommandModel& model, std::ostream& out);
 
 }  // namespace unidyn::cli

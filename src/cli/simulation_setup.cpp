@@ -85,6 +85,15 @@ SimulationOptions options_for(const System& system, const ModelCommands& c) {
   return o;
 }
 
+std::string run_headline(const System& system, const SimulationOptions& options,
+                         const SimulationSummary& s) {
+  return fmt::format(
+      "{}: {} from t = 0 to {} ({}), {} rows\n", system.name,
+      s.ok ? (s.stopped ? "simulated until stop_when" : "simulated")
+           : "FAILED at t = " + fmt::format("{:.10g}", s.failure_time) + ": " + s.message,
+      options.t_end, options.method, s.rows);
+}
+
 std::string run_figures(const System& system, const SimulationSummary& s) {
   fmt::memory_buffer buffer;
   const auto out = std::back_inserter(buffer);

@@ -41,6 +41,11 @@ CompiledSystem command_compiled(const ModelCommands& c, const CommandModel& mode
 // The model's simulate: settings with the command line's overrides.
 SimulationOptions options_for(const System& system, const ModelCommands& c);
 
+// The summary's first line: "NAME: simulated from t = 0 to T (METHOD), N rows", or FAILED at t with
+// the reason.
+std::string run_headline(const System& system, const SimulationOptions& options,
+                         const SimulationSummary& s);
+
 // The summary's figures of the rows: energy, constraint residuals and each multiplier's range,
 // the initial projection, gimbal lock, conserved quantities (lines starting "  ").
 std::string run_figures(const System& system, const SimulationSummary& s);

@@ -1,0 +1,133 @@
+"""unidyn from Python: models of mechanical systems, their equations of motion, runs and analyses.
+
+    import unidyn
+    top = unidyn.load("heavy-top")            # a bundled model, a model file, or a model's text
+    print(top.derive())                       # Lagrange's equations as the book prints them
+    run = top.simulate(t_end=5, set={"m": 2})
+    run["theta"], run.t                       # numpy arrays, one per column
+    run.to_pandas()                           # a DataFrame, when pandas is installed
+    qdd, lam = top.rhs(q, qd)                 # one state, or an array of states (one per row)
+    top.modes(at={"theta": 0.3, "der(psi)": 60})
+
+Each method does what the `unidyn` command of the same name does, with the same options and checks.
+A mistake in a model raises unidyn.ModelError (a ValueError) with .file, .line and .column; other
+bad input raises ValueError; a failure RuntimeError. The work runs without the interpreter's lock.
+"""
+
+import json
+
+import numpy as np
+
+from ._unidyn import ModelError
+from ._unidyn import Model as _Model
+
+__all__ = ["load", "Model", "Result", "ModelError"]
+
+
+def _settings(values):
+    """{name: number} as [(name, float)], in the order given."""
+    return [(str(k), float(v)) for k, v in (values or {}).items()]
+
+
+def _points(values):
+    """{name: value} as NAME=VALUE texts (a value may be an expression in the parameters)."""
+    return [f"{k}={v}" for k, v in (values or {}).items()]
+
+
+class Result:
+    """A run: its columns as numpy arrays (result["name"], result.t), every row in .data, the
+    summary `unidyn simulate` prints, the events (t, what), and whether it succeeded."""
+
+    def __init__(self, columns, data, summary, events, ok, message):
+        self.columns = list(columns)
+        self.data = data
+        self.summary = summary
+        self.events = [(float(t), str(what)) for t, what in events]
+        self.ok = bool(ok)
+        self.message = message
+        self._index = {name: k for k, name in enumerate(self.columns)}
+
+    def __getitem__(self, name):
+        if name not in self._index:
+            raise KeyError(f"no column {name!r}; the columns are {', '.join(self.columns)}")
+        return self.data[:, self._index[name]]
+
+    def __len__(self):
+        return self.data.shape[0]
+
+    def __repr__(self):
+        return f"<unidyn.Result: {len(self)} rows of {len(self.columns)} columns, {self.summary.splitlines()[0]}>"
+
+    @property
+    def t(self):
+        return self["t"]
+
+    def to_pandas(self):
+        """The rows as a pandas DataFrame (pandas must be installed)."""
+        import pandas
+
+        return pandas.DataFrame(self.data, columns=self.columns)
+
+
+class Model:
+    """A model: parameters, coordinates, constraints; its equations compiled once on first use
+    (parameters are inputs of the compiled code: one compilation serves every parameter set)."""
+
+    def __init__(self, source):
+        self._model = _Model(str(source))
+
+    name = property(lambda self: self._model.name)
+    reference = property(lambda self: self._model.reference)
+    path = property(lambda self: self._model.path)
+    text = property(lambda self: self._model.text)
+    coordinates = property(lambda self: self._model.coordinates)
+    constraints = property(lambda self: self._model.constraints)
+
+    @property
+    def parameters(self):
+        """{name: value} as the model gives them."""
+        return dict(self._model.parameters)
+
+    def __repr__(self):
+        return f"<unidyn.Model {self.name!r}: {len(self.coordinates)} coordinates>"
+
+    def derive(self, method="lagrange", format="text", form="textbook"):
+        """`unidyn derive`: method lagrange | kane | newton-euler | second-form; format text |
+        latex | json | c | python | matlab; form textbook | zees | matrix."""
+        return self._model.derive(method, format, form)
+
+    def simulate(self, t_end=None, output_step=None, method=None, rtol=None, set=None,
+                 poses=False):
+        """`unidyn simulate`: a Result. set: {name: number} of parameters, coordinates q and
+        rates der(q); poses: each body's centre and Euler parameters, each particle's position."""
+        return Result(*self._model._simulate(t_end, output_step, method, rtol, _settings(set),
+                                             bool(poses)))
+
+    def rhs(self, q, qd, t=0.0, set=None):
+        """q'' and the multipliers lambda at (t, q, q') — q and qd of n values, or (count, n)
+        arrays of states (one per row, evaluated without the interpreter's lock)."""
+        return self._model.rhs(np.asarray(q, dtype=float), np.asarray(qd, dtype=float), float(t),
+                               _settings(set))
+
+    def linearize(self, at, set=None):
+        """`unidyn linearize --format json`, as a dict."""
+        return json.loads(self._model._analysis("linearize", _points(at), _settings(set), 0, []))
+
+    def modes(self, at, set=None):
+        """`unidyn modes --format json`, as a dict (eigenvalues, shapes, stability)."""
+        return json.loads(self._model._analysis("modes", _points(at), _settings(set), 0, []))
+
+    def equilibria(self, at=None, set=None, starts=200, cyclic=()):
+        """`unidyn equilibria --format json`, as a dict."""
+        return json.loads(self._model._analysis("equilibria", _points(at), _settings(set),
+                                                int(starts), list(cyclic)))
+
+    def report(self, path, t_end=None, output_step=None, method=None, rtol=None, set=None):
+        """`unidyn report -o PATH`: the HTML page; returns the line the command prints."""
+        return self._model._report(str(path), t_end, output_step, method, rtol, _settings(set))
+
+
+def load(source):
+    """A model from a file, a bundled model's name, or a model's text."""
+    return Model(source)
+
