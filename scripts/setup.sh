@@ -5,8 +5,8 @@
 #           Node.js with npm where there is none (the report's web packages come from the npm
 #           registry at build time)
 #   test    run + GoogleTest, Google Benchmark, the benchmark peers the test build compiles, pdflatex,
-#           SymPy, Chromium (the report's browser tests), pybind11 and Python's numpy, pytest
-#           and pandas (the Python module and its tests)
+#           SymPy, Chromium (the report's browser tests), pybind11 and Python's numpy, pytest,
+#           pandas and distributed (the Python module, its tests and its Dask sweeps)
 #   fuzz    run + clang with libFuzzer (scripts/fuzz.sh)
 #   bench   test (which has Python with SymPy for the side-by-side runs of bench/run.sh)
 #   all     every one of these and clang-format
@@ -22,7 +22,7 @@ run=(
 # documents `derive --standalone` writes, and SymPy to read the JSON `derive` writes
 test=(googletest libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev libsimbody-dev
   texlive-latex-base python3 python3-sympy chromium
-  pybind11-dev python3-dev python3-numpy python3-pytest python3-pandas)
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-pandas python3-distributed)
 # Node.js and npm: Debian's, unless the machine has them already (a newer Node.js, say)
 if ! command -v npm >/dev/null 2>&1; then run+=(nodejs npm); fi
 # fuzzing: clang with libFuzzer

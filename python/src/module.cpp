@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include "python_model.hpp"
+#include "unidyn/integrate/simulation.hpp"
 #include "unidyn/rotation/errors.hpp"
 
 namespace py = pybind11;
@@ -105,6 +106,8 @@ PYBIND11_MODULE(_unidyn, module) {
                                  names.push_back(q.name);
                                return names;
                              })
+      .def_property_readonly(
+          "columns", [](const PythonModel& m) { return unidyn::simulation_columns(m.system()); })
       .def_property_readonly("constraints",
                              [](const PythonModel& m) {
                                std::vector<std::string> names;

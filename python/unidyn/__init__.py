@@ -14,6 +14,7 @@ A mistake in a model raises unidyn.ModelError (a ValueError) with .file, .line a
 bad input raises ValueError; a failure RuntimeError. The work runs without the interpreter's lock.
 """
 
+import functools
 import json
 
 import numpy as np
@@ -21,7 +22,7 @@ import numpy as np
 from ._unidyn import ModelError
 from ._unidyn import Model as _Model
 
-__all__ = ["load", "Model", "Result", "ModelError"]
+__all__ = ["load", "Model", "Result", "ModelError", "sweep", "SweepResult"]
 
 
 def _settings(values):
@@ -76,12 +77,17 @@ class Model:
     def __init__(self, source):
         self._model = _Model(str(source))
 
+    def __reduce__(self):
+        # to another process (an executor's worker) as its text: loaded there once per process
+        return (_loaded, (self.text,))
+
     name = property(lambda self: self._model.name)
     reference = property(lambda self: self._model.reference)
     path = property(lambda self: self._model.path)
     text = property(lambda self: self._model.text)
     coordinates = property(lambda self: self._model.coordinates)
     constraints = property(lambda self: self._model.constraints)
+    columns = property(lambda self: self._model.columns, doc="the columns of its runs")
 
     @property
     def parameters(self):
@@ -131,3 +137,83 @@ def load(source):
     """A model from a file, a bundled model's name, or a model's text."""
     return Model(source)
 
+
+
+@functools.lru_cache(maxsize=16)
+def _loaded(text):
+    """A model from its text, once per process (an executor's worker keeps it, compiled)."""
+    return Model(text)
+
+
+def _run_chunk(text, first, runs, options):
+    """Runs (each a dict of settings) of the model given by its text: per run its index, whether
+    it succeeded, its last row, its events and why it failed. In whatever process runs it."""
+    model = _loaded(text)
+    out = []
+    for k, settings in enumerate(runs):
+        try:
+            result = model.simulate(set=settings, **options)
+            last = result.data[-1] if len(result) else np.full(len(result.columns), np.nan)
+            out.append((first + k, result.ok, last, len(result.events), result.message))
+        except ValueError as error:  # a start that cannot be made: that run's failure
+            out.append((first + k, False, None, 0, str(error)))
+    return out
+
+
+class SweepResult:
+    """A sweep's runs in their order: the values set (.settings), whether each succeeded (.ok),
+    each one's last row (.final, a (runs, columns) array, NaN where a run made no row), its
+    events' count and why it failed. .to_pandas() is one table of all of it."""
+
+    def __init__(self, names, columns, settings, rows):
+        self.names, self.columns, self.settings = names, columns, settings
+        self.ok = np.array([r[1] for r in rows], dtype=bool)
+        self.final = np.array([r[2] if r[2] is not None else np.full(len(columns), np.nan)
+                               for r in rows]).reshape(len(rows), len(columns))
+        self.events = np.array([r[3] for r in rows], dtype=int)
+        self.messages = [r[4] for r in rows]
+
+    def __len__(self):
+        return len(self.settings)
+
+    def __getitem__(self, column):
+        """The last value of a column in each run."""
+        return self.final[:, self.columns.index(column)]
+
+    def to_pandas(self):
+        import pandas
+
+        table = pandas.DataFrame(self.settings)
+        table["ok"] = self.ok
+        table["events"] = self.events
+        table["message"] = self.messages
+        for k, name in enumerate(self.columns):
+            table[f"final.{name}"] = self.final[:, k]
+        return table
+
+
+def sweep(model, settings, executor=None, chunk=10, t_end=None, output_step=None, method=None,
+          rtol=None):
+    """Runs the model once per entry of `settings` (each a {name: number} of parameters,
+    coordinates q and rates der(q)), in chunks of `chunk` runs: in this process, or on any
+    concurrent.futures executor or Dask distributed.Client (`executor.submit`). Each worker loads
+    and compiles the model once. The result is the same, bit for bit, however the chunks were run;
+    a chunk whose worker died is run again by the executor (Dask does so by itself), and each run
+    appears once, in its place."""
+    if not isinstance(model, Model):
+        model = load(model)
+    settings = [dict(s) for s in settings]
+    options = {"t_end": t_end, "output_step": output_step, "method": method, "rtol": rtol}
+    chunk = max(1, int(chunk))
+    pieces = [(first, settings[first:first + chunk]) for first in range(0, len(settings), chunk)]
+    if executor is None:
+        done = [_run_chunk(model.text, first, runs, options) for first, runs in pieces]
+    else:
+        futures = [executor.submit(_run_chunk, model.text, first, runs, options)
+                   for first, runs in pieces]
+        done = [future.result() for future in futures]
+    rows = [row for piece in done for row in piece]
+    if [r[0] for r in rows] != list(range(len(settings))):
+        raise RuntimeError("the executor returned the runs out of order or not once each")
+    names = sorted({name for s in settings for name in s})
+    return SweepResult(names, model.columns, settings, rows)

@@ -3,7 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
 #include <cmath>
 #include <iostream>
 
@@ -15,6 +14,7 @@
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/integrate/simulation.hpp"
 #include "unidyn/io/csv.hpp"
+#include "unidyn/sweep/manifest.hpp"
 
 namespace unidyn::cli {
 namespace {
@@ -32,37 +32,24 @@ std::vector<std::pair<std::string, double>> parameter_sets(const System& system,
   return overrides;
 }
 
-// A finite number, all of `text`.
-std::optional<double> finite(std::string_view text) {
-  double value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return {};
-  return value;
-}
-
-// --sweep PARAM=FROM:TO:COUNT.
+// --sweep PARAM=FROM:TO:COUNT (a sweep's grid axis of at least two values).
 struct SweepRange {
   std::string parameter;
   double from = 0, to = 0;
   std::size_t count = 0;
 };
 SweepRange parse_sweep(const std::string& text) {
-  const std::size_t eq = text.find('='), c1 = text.find(':', eq), c2 = text.find(':', c1 + 1);
-  const auto bad = [&] {
-    return std::invalid_argument("--sweep " + text +
-                                 ": expected NAME=FROM:TO:COUNT (numbers, COUNT an integer >= 2)");
-  };
-  if (eq == std::string::npos || c1 == std::string::npos || c2 == std::string::npos) throw bad();
-  const auto from = finite(std::string_view(text).substr(eq + 1, c1 - eq - 1));
-  const auto to = finite(std::string_view(text).substr(c1 + 1, c2 - c1 - 1));
-  std::size_t count = 0;
-  const std::string_view tail = std::string_view(text).substr(c2 + 1);
-  const auto [end, error] = std::from_chars(tail.data(), tail.data() + tail.size(), count);
-  if (!from || !to || error != std::errc() || end != tail.data() + tail.size() || count < 2 ||
-      count > 1'000'000) {
-    throw bad();
+  GridAxis axis;
+  try {
+    axis = parse_grid_axis(text);
+  } catch (const std::invalid_argument&) {
+    axis.count = 0;
   }
-  return {text.substr(0, eq), *from, *to, count};
+  if (axis.count < 2) {
+    throw std::invalid_argument("--sweep " + text +
+                                ": expected NAME=FROM:TO:COUNT (numbers, COUNT an integer >= 2)");
+  }
+  return {axis.name, axis.from, axis.to, axis.count};
 }
 
 // modes --sweep: one CSV row per value, the stability boundaries on standard error.

@@ -14,6 +14,7 @@
 #include "model_commands.hpp"
 #include "rotation_command.hpp"
 #include "sanitizers.hpp"
+#include "sweep_command.hpp"
 #include "unidyn/rotation/errors.hpp"
 #include "unidyn/symbolic/expression.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
@@ -38,6 +39,8 @@ int main(int argc, char** argv) {
   unidyn::cli::add_model_commands(app, models);
   unidyn::cli::AnalysisCommands analysis;
   unidyn::cli::add_analysis_commands(app, analysis);
+  unidyn::cli::SweepCommand sweep;
+  unidyn::cli::add_sweep_command(app, sweep);
 
   try {
     app.parse(argc, argv);
@@ -61,6 +64,7 @@ int main(int argc, char** argv) {
   try {
     int status =
         rotation.rotation->parsed() ? unidyn::cli::run_rotation_command(rotation)
+        : sweep.sweep->parsed()     ? unidyn::cli::run_sweep_command(sweep)
         : analysis.linearize->parsed() || analysis.modes->parsed() || analysis.equilibria->parsed()
             ? unidyn::cli::run_analysis_commands(analysis)
             : unidyn::cli::run_model_commands(models);

@@ -67,22 +67,7 @@ CompiledSystem command_compiled(const ModelCommands& c, const CommandModel& mode
 }
 
 SimulationOptions options_for(const System& system, const ModelCommands& c) {
-  SimulationOptions o = simulation_options(system.simulate);
-  if (c.t_end > 0) o.t_end = c.t_end;
-  if (c.output_step > 0) o.output_step = c.output_step;
-  if (!c.integrator.empty()) o.method = c.integrator;
-  if (c.rtol > 0) {
-    o.rtol = c.rtol;
-    o.atol = std::min(system.simulate.atol, o.rtol * 1e-2);
-  }
-  // a run asked for more rows than anyone can use would fill the disk
-  if ((o.t_end / o.output_step) > 1e8) {
-    throw std::invalid_argument("--t-end / --output-step asks for more than 10^8 rows");
-  }
-  if (o.method != "dopri5" && o.method != "rk4" && o.method != "cvode" && o.method != "rattle") {
-    throw std::invalid_argument("--method must be dopri5, rk4, cvode or rattle");
-  }
-  return o;
+  return simulation_options(system.simulate, {c.t_end, c.output_step, c.rtol, c.integrator});
 }
 
 std::string run_headline(const System& system, const SimulationOptions& options,

@@ -251,6 +251,26 @@ SimulationOptions simulation_options(const SimulationSettings& settings) {
   return o;
 }
 
+SimulationOptions simulation_options(const SimulationSettings& settings,
+                                     const SimulationOverrides& overrides) {
+  SimulationOptions o = simulation_options(settings);
+  if (overrides.t_end > 0) o.t_end = overrides.t_end;
+  if (overrides.output_step > 0) o.output_step = overrides.output_step;
+  if (!overrides.method.empty()) o.method = overrides.method;
+  if (overrides.rtol > 0) {
+    o.rtol = overrides.rtol;
+    o.atol = std::min(settings.atol, o.rtol * 1e-2);
+  }
+  // a run asked for more rows than anyone can use would fill the disk
+  if ((o.t_end / o.output_step) > 1e8) {
+    throw std::invalid_argument("--t-end / --output-step asks for more than 10^8 rows");
+  }
+  if (o.method != "dopri5" && o.method != "rk4" && o.method != "cvode" && o.method != "rattle") {
+    throw std::invalid_argument("--method must be dopri5, rk4, cvode or rattle");
+  }
+  return o;
+}
+
 std::vector<std::string> simulation_columns(const System& system) {
   std::vector<std::string> columns{"t"};
   for (const auto& q : system.coordinates()) columns.push_back(q.name);

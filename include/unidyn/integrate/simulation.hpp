@@ -28,6 +28,16 @@ struct SimulationOptions {
 // The options a model file's `simulate:` asks for (atol no larger than rtol / 100).
 SimulationOptions simulation_options(const SimulationSettings& settings);
 
+// What a user sets for a run instead of the model's `simulate:` (0 or "": the model's own).
+struct SimulationOverrides {
+  double t_end = 0, output_step = 0, rtol = 0;
+  std::string method;
+};
+// The model's options with the overrides (a tolerance given brings atol down to rtol / 100 at
+// most). Throws std::invalid_argument for an unknown method or a run of more than 10^8 rows.
+SimulationOptions simulation_options(const SimulationSettings& settings,
+                                     const SimulationOverrides& overrides);
+
 // The state of a system: parameters' values, q, q̇ at t0.
 struct SimulationStart {
   std::vector<double> parameters;

@@ -1,0 +1,55 @@
+// Running a chunk of a sweep (`unidyn sweep run MANIFEST --rows A:B`) and gathering the results
+// (`unidyn sweep gather`). Each run's result is one file, <dir>/run-<index>.csv: its index, seed
+// and values, whether it succeeded, its rows and events, the energy's relative drift, why it
+// failed, and the last row of its simulation ("final.<column>"). A result is written whole or not
+// at all (a temporary file, synced, renamed into place), and a run whose result is there is not
+// run again: a chunk can be run twice, by two workers at once, or after a crash, and the results
+// are the same files. The model is compiled once per chunk (its parameters are inputs of the
+// code), native code shared through its cache.
+#pragma once
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <utility>
+
+#include "unidyn/sweep/manifest.hpp"
+
+namespace unidyn {
+
+// Where the results of a manifest go by default: MANIFEST.runs beside it.
+std::filesystem::path default_results_directory(const std::string& manifest_path);
+
+// The result file of a run.
+std::filesystem::path result_path(const std::filesystem::path& directory, std::size_t index);
+
+struct ChunkReport {
+  std::size_t done = 0, skipped = 0, failed = 0;
+};
+
+// Runs the manifest's runs [first, last) into `directory` (made when missing), one line per run
+// on `log`. Throws std::invalid_argument when the model file changed since the plan or a range
+// is outside the manifest.
+ChunkReport run_sweep_rows(const SweepManifest& manifest, std::size_t first, std::size_t last,
+                           const std::filesystem::path& directory, std::ostream& log);
+
+// The results as one table on `out`: a comment line with the model, the manifest's SHA-256 and
+// the count of runs, the header of the result files, then their rows in the runs' order. Returns
+// the runs whose result is missing (their rows are left out).
+std::vector<std::size_t> gather_sweep(const SweepManifest& manifest,
+                                      const std::string& manifest_sha256,
+                                      const std::filesystem::path& directory, std::ostream& out);
+
+// The rows [first, last) of task `task` when the runs are cut into chunks of `chunk` (the last one
+// shorter). Throws std::invalid_argument for a chunk of 0 or a task past the runs.
+std::pair<std::size_t, std::size_t> task_rows(std::size_t runs, std::size_t chunk,
+                                              std::size_t task);
+
+// A launcher: a Slurm job array script (one task per chunk of `chunk` runs, SLURM_ARRAY_TASK_ID its
+// task) or a GNU parallel script, each task `COMMAND sweep run MANIFEST --chunk N --task I`.
+std::string slurm_script(const std::string& command, const std::string& manifest_path,
+                         std::size_t runs, std::size_t chunk);
+std::string parallel_script(const std::string& command, const std::string& manifest_path,
+                            std::size_t runs, std::size_t chunk);
+
+}  // namespace unidyn

@@ -1,0 +1,212 @@
+// Running a chunk of a sweep, gathering its results, and the launchers (sweep/sweep_run.hpp).
+#include "unidyn/sweep/sweep_run.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "unidyn/equations/kane.hpp"
+#include "unidyn/integrate/initial_state.hpp"
+#include "unidyn/io/csv.hpp"
+#include "unidyn/io/model_file.hpp"
+#include "unidyn/numeric/compiled_system.hpp"
+#include "unidyn/numeric/digest.hpp"
+
+namespace unidyn {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The header of a result file: the run, its values, its outcome, then its last row.
+std::string result_header(const SweepManifest& m, const std::vector<std::string>& columns) {
+  std::string out = "run,seed";
+  for (const auto& name : m.names) out += "," + csv_field(name);
+  out += ",ok,rows,events,energy_drift,message";
+  for (const auto& c : columns) out += "," + csv_field("final." + c);
+  return out + "\n";
+}
+
+// `text` as the file `path`, whole or not at all: a temporary file beside it, synced, renamed
+// into place, and the directory synced.
+void write_atomically(const fs::path& path, const std::string& text) {
+  const fs::path temporary =
+      path.parent_path() / fmt::format(".{}.{}.tmp", path.filename().string(), getpid());
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw std::runtime_error("cannot write " + temporary.string());
+  std::size_t written = 0;
+  while (written < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
+    if (n <= 0) {
+      ::close(fd);
+      std::remove(temporary.c_str());
+      throw std::runtime_error("cannot write " + temporary.string());
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write " + temporary.string());
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot rename into " + path.string());
+  }
+  if (const int dir = ::open(path.parent_path().c_str(), O_RDONLY | O_DIRECTORY); dir >= 0) {
+    ::fsync(dir);
+    ::close(dir);
+  }
+}
+
+// One run: its start from the manifest's values, the simulation, its result row.
+struct RunRow {
+  std::string text;
+  bool ok = false;
+};
+RunRow run_one(const SweepManifest& m, const SweepRun& run, const System& system,
+               const CompiledSystem& compiled, std::size_t columns) {
+  std::vector<std::pair<std::string, double>> sets;
+  for (std::size_t k = 0; k < m.names.size(); ++k) sets.emplace_back(m.names[k], run.values[k]);
+  std::string row = std::to_string(run.index) + "," + std::to_string(run.seed);
+  for (const double v : run.values) row += fmt::format(",{}", v);
+  std::vector<double> last;
+  SimulationSummary s;
+  try {
+    SimulationStart start = initial_state(system, sets);
+    complete_initial_state(system, compiled, start);
+    s = simulate(system, compiled, start, simulation_options(system.simulate, m.options),
+                 [&](const std::vector<double>& values) { last = values; });
+  } catch (const std::exception& e) {
+    // a start that cannot be made (the constraints, gimbal lock) is this run's failure
+    s.ok = false;
+    s.message = e.what();
+  }
+  row += fmt::format(",{},{},{},{},{}", s.ok ? 1 : 0, s.rows, s.phases.size(),
+                     s.has_energy ? fmt::format("{}", s.energy_relative_drift) : "",
+                     csv_field(s.message));
+  for (std::size_t c = 0; c < columns; ++c) {
+    row += c < last.size() ? fmt::format(",{}", last[c]) : ",";
+  }
+  return {row + "\n", s.ok};
+}
+
+}  // namespace
+
+fs::path default_results_directory(const std::string& manifest_path) {
+  return fs::path(manifest_path + ".runs");
+}
+
+fs::path result_path(const fs::path& directory, std::size_t index) {
+  return directory / fmt::format("run-{:07}.csv", index);
+}
+
+ChunkReport run_sweep_rows(const SweepManifest& m, std::size_t first, std::size_t last,
+                           const fs::path& directory, std::ostream& log) {
+  if (first > last || last > m.runs.size()) {
+    throw std::invalid_argument(
+        fmt::format("--rows {}:{} is outside the manifest's {} runs", first, last, m.runs.size()));
+  }
+  // the model as planned, compiled once for the chunk (native code through its cache)
+  const std::string text = read_model_text(m.model);
+  if (sha256_hex(text) != m.model_sha256) {
+    throw std::invalid_argument(m.model +
+                                " changed since the sweep was planned (its SHA-256 is "
+                                "not the manifest's): plan the sweep again");
+  }
+  const System system = parse_model(text, m.model);
+  CompileOptions compile;
+  compile.native = true;
+  compile.native_options.key = "full\n" + model_code_text(text, m.model);
+  const CompiledSystem compiled(system, kane_equations(system), compile);
+  const std::vector<std::string> columns = simulation_columns(system);
+  const std::string header = result_header(m, columns);
+  fs::create_directories(directory);
+  ChunkReport report;
+  for (std::size_t k = first; k < last; ++k) {
+    const fs::path path = result_path(directory, k);
+    if (fs::exists(path)) {
+      ++report.skipped;
+      continue;
+    }
+    const RunRow row = run_one(m, m.runs[k], system, compiled, columns.size());
+    write_atomically(path, header + row.text);
+    ++report.done;
+    if (!row.ok) ++report.failed;
+    log << "run " << k << (row.ok ? "" : " (FAILED)") << " written to " << path.string() << "\n";
+  }
+  return report;
+}
+
+std::vector<std::size_t> gather_sweep(const SweepManifest& m, const std::string& manifest_sha256,
+                                      const fs::path& directory, std::ostream& out) {
+  out << "# unidyn sweep of " << m.model << ", manifest sha256 " << manifest_sha256 << ", "
+      << m.runs.size() << " runs\n";
+  std::vector<std::size_t> missing;
+  bool header = false;
+  for (const SweepRun& run : m.runs) {
+    std::ifstream in(result_path(directory, run.index));
+    std::string first, row;
+    if (!in || !std::getline(in, first) || !std::getline(in, row)) {
+      missing.push_back(run.index);
+      continue;
+    }
+    if (!header) out << first << "\n";
+    header = true;
+    out << row << "\n";
+  }
+  return missing;
+}
+
+std::pair<std::size_t, std::size_t> task_rows(std::size_t runs, std::size_t chunk,
+                                              std::size_t task) {
+  if (chunk == 0) throw std::invalid_argument("--chunk must be at least 1");
+  const std::size_t first = task * chunk;
+  if (first >= runs) {
+    throw std::invalid_argument(
+        fmt::format("task {} of chunks of {} is past the manifest's {} runs", task, chunk, runs));
+  }
+  return {first, std::min(first + chunk, runs)};
+}
+
+std::string slurm_script(const std::string& command, const std::string& manifest_path,
+                         std::size_t runs, std::size_t chunk) {
+  const std::size_t tasks = (runs + chunk - 1) / chunk;
+  return fmt::format(
+      "#!/bin/bash\n"
+      "# A Slurm job array of the sweep {manifest}: {runs} runs in {tasks} tasks of up to "
+      "{chunk}.\n"
+      "# Submit with `sbatch` from a directory every node sees; a task run again (requeued, or by\n"
+      "# hand) skips the runs it finds done. Then: unidyn sweep gather {manifest}\n"
+      "#SBATCH --job-name=unidyn-sweep\n"
+      "#SBATCH --array=0-{last}\n"
+      "#SBATCH --ntasks=1\n"
+      "#SBATCH --cpus-per-task=1\n"
+      "set -euo pipefail\n"
+      "'{command}' sweep run '{manifest}' --chunk {chunk} --task \"$SLURM_ARRAY_TASK_ID\"\n",
+      fmt::arg("manifest", manifest_path), fmt::arg("runs", runs), fmt::arg("tasks", tasks),
+      fmt::arg("chunk", chunk), fmt::arg("last", tasks == 0 ? 0 : tasks - 1),
+      fmt::arg("command", command));
+}
+
+std::string parallel_script(const std::string& command, const std::string& manifest_path,
+                            std::size_t runs, std::size_t chunk) {
+  const std::size_t tasks = (runs + chunk - 1) / chunk;
+  return fmt::format(
+      "#!/bin/bash\n"
+      "# The sweep {manifest} by GNU parallel: {runs} runs in {tasks} tasks of up to {chunk}, one\n"
+      "# per core; run it again to finish what an interrupted one left.\n"
+      "# Then: unidyn sweep gather {manifest}\n"
+      "set -euo pipefail\n"
+      "seq 0 {last} | parallel --halt now,fail=1 '{command}' sweep run '{manifest}' --chunk "
+      "{chunk} "
+      "--task {{}}\n",
+      fmt::arg("manifest", manifest_path), fmt::arg("runs", runs), fmt::arg("tasks", tasks),
+      fmt::arg("chunk", chunk), fmt::arg("last", tasks == 0 ? 0 : tasks - 1),
+      fmt::arg("command", command));
+}
+
+}  // namespace unidyn

@@ -1,0 +1,76 @@
+// `unidyn sweep` as a user runs it: plan, the Slurm script run task by task as a job array would
+// (SLURM_ARRAY_TASK_ID set), gather — the table the same as one serial `sweep run` makes — and
+// bad input refused with status 2, missing results with 1.
+#include <filesystem>
+
+#include "cli/cli_support.hpp"
+
+namespace unidyn::cli_test {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(Sweep, SlurmTasksMakeTheSerialTable) {
+  const fs::path dir = temp_path("sweep");
+  fs::create_directories(dir);
+  const std::string manifest = (dir / "dp.sweep.yaml").string();
+  const Outcome planned =
+      run("sweep plan double-pendulum --grid theta1=0.1:1.2:5 --random "
+          "'m2=U(0.5,2)' --samples 2 --seed 3 --t-end 0.5 -o '" +
+          manifest + "'");
+  ASSERT_EQ(planned.status, 0) << planned.err;
+  EXPECT_TRUE(contains(planned.out, "10 runs of theta1, m2 planned")) << planned.out;
+  // before any run: all ten missing
+  EXPECT_EQ(run("sweep gather '" + manifest + "'").status, 1);
+
+  // the job array: 3 tasks of 4, the second one twice (a requeued task)
+  const std::string script = (dir / "job.sh").string();
+  ASSERT_EQ(run("sweep emit '" + manifest + "' --slurm --chunk 4 -o '" + script + "'").status, 0);
+  EXPECT_TRUE(contains(read_file(script), "#SBATCH --array=0-2\n"));
+  for (const char* task : {"0", "1", "2", "1"}) {
+    const int status = std::system(
+        ("SLURM_ARRAY_TASK_ID=" + std::string(task) + " bash '" + script + "' >/dev/null 2>&1")
+            .c_str());
+    EXPECT_EQ(status, 0) << "task " << task;
+  }
+  const Outcome gathered = run("sweep gather '" + manifest + "'");
+  ASSERT_EQ(gathered.status, 0) << gathered.err;
+
+  // the same plan run serially in another directory of results
+  const Outcome serial =
+      run("sweep run '" + manifest + "' --results '" + (dir / "serial").string() + "'");
+  ASSERT_EQ(serial.status, 0) << serial.err;
+  EXPECT_TRUE(contains(serial.out, "10 made (0 of them failed), 0 already done")) << serial.out;
+  const Outcome serial_table =
+      run("sweep gather '" + manifest + "' --results '" + (dir / "serial").string() + "'");
+  EXPECT_EQ(serial_table.out, gathered.out);
+  EXPECT_EQ(lines_of(gathered.out).size(), 12u);  // the comment, the header, ten runs
+  fs::remove_all(dir);
+}
+
+TEST(Sweep, BadInputIsRefused) {
+  const std::string manifest = temp_path("bad.sweep.yaml");
+  EXPECT_EQ(run("sweep plan double-pendulum -o '" + manifest + "'").status, 2);  // nothing swept
+  EXPECT_EQ(run("sweep plan double-pendulum --grid 'theta1=0:1' -o '" + manifest + "'").status, 2);
+  const Outcome unknown =
+      run("sweep plan double-pendulum --grid 'length=0:1:3' -o '" + manifest + "'");
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_TRUE(contains(unknown.err, "length")) << unknown.err;
+  EXPECT_EQ(run("sweep plan double-pendulum --random 'm2=U(2,1)' -o '" + manifest + "'").status, 2);
+  EXPECT_EQ(
+      run("sweep plan double-pendulum --grid theta1=0:1:3 --method euler -o '" + manifest + "'")
+          .status,
+      2);
+  ASSERT_EQ(run("sweep plan double-pendulum --grid theta1=0:1:3 -o '" + manifest + "'").status, 0);
+  EXPECT_EQ(run("sweep run '" + manifest + "' --rows 2:9").status, 2);
+  EXPECT_EQ(run("sweep run '" + manifest + "' --chunk 2 --task 2").status, 2);
+  EXPECT_EQ(run("sweep emit '" + manifest + "'").status, 2);  // neither --slurm nor --parallel
+  write_file(manifest, "unidyn_sweep: 1\nmodel: [\n");
+  const Outcome damaged = run("sweep run '" + manifest + "'");
+  EXPECT_EQ(damaged.status, 2);
+  EXPECT_TRUE(contains(damaged.err, manifest + ":")) << damaged.err;
+  std::remove(manifest.c_str());
+}
+
+}  // namespace
+}  // namespace unidyn::cli_test

@@ -1,0 +1,144 @@
+// Running a sweep's chunks (sweep/sweep_run.hpp): each result the same as the run made directly
+// with its values, a chunk run again or overlapping another skipped and unchanged, a failed run
+// recorded, a model changed since the plan refused, the table in the runs' order with the
+// missing ones named, and the tasks' rows of the launchers.
+#include "unidyn/sweep/sweep_run.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "support/model_run.hpp"
+#include "unidyn/equations/kane.hpp"
+#include "unidyn/integrate/initial_state.hpp"
+#include "unidyn/io/model_file.hpp"
+
+namespace unidyn {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A scratch copy of a bundled model and a plan of it.
+struct Sweep {
+  fs::path dir;
+  std::string model;
+  SweepManifest manifest;
+
+  explicit Sweep(const std::string& name, const std::vector<std::string>& grid, double t_end) {
+    dir = fs::path(testing::TempDir()) / ("sweep_" + name + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    model = (dir / (name + ".yaml")).string();
+    fs::copy_file(test::model_path(name), model);
+    std::vector<GridAxis> axes;
+    for (const auto& text : grid) axes.push_back(parse_grid_axis(text));
+    manifest = plan_sweep(model, read(model), {t_end, 0, 0, ""}, axes, {}, 1, 1);
+  }
+  ~Sweep() { fs::remove_all(dir); }
+};
+
+TEST(SweepRun, EachResultIsTheRunMadeDirectly) {
+  Sweep s("double-pendulum", {"theta1=0.2:0.8:4", "m2=1:2:2"}, 1.0);
+  std::ostringstream log;
+  const ChunkReport report = run_sweep_rows(s.manifest, 0, 8, s.dir / "runs", log);
+  EXPECT_EQ(report.done, 8u);
+  EXPECT_EQ(report.failed, 0u);
+  // run 5: theta1 = 0.2 + 2 (0.6/3) (0.6000000000000001), m2 = 2, simulated here without the sweep
+  const std::vector<double>& values = s.manifest.runs[5].values;
+  const System system = load_model(s.model);
+  const CompiledSystem compiled(system, kane_equations(system));
+  SimulationStart start = initial_state(system, {{"theta1", values[0]}, {"m2", values[1]}});
+  complete_initial_state(system, compiled, start);
+  std::vector<double> last;
+  simulate(system, compiled, start, simulation_options(system.simulate, s.manifest.options),
+           [&](const std::vector<double>& row) { last = row; });
+  const std::string result = read(result_path(s.dir / "runs", 5));
+  const std::string expected =
+      fmt::format("5,{},{},{},1,101,0,", s.manifest.runs[5].seed, values[0], values[1]);
+  EXPECT_EQ(result.find(expected), result.find('\n') + 1) << result;
+  std::string tail;
+  for (const double v : last) tail += fmt::format(",{}", v);
+  EXPECT_EQ(result.substr(result.size() - tail.size() - 1), tail + "\n") << result;
+}
+
+TEST(SweepRun, ChunksRunAgainOrOverlappingChangeNothing) {
+  Sweep s("double-pendulum", {"theta1=0.1:1:6"}, 0.5);
+  std::ostringstream log;
+  run_sweep_rows(s.manifest, 0, 4, s.dir / "runs", log);
+  const std::string before = read(result_path(s.dir / "runs", 2));
+  const auto written = fs::last_write_time(result_path(s.dir / "runs", 2));
+  // a temporary file a killed worker left does not count as a result
+  std::ofstream(s.dir / "runs" / ".run-0000004.csv.999.tmp") << "half a row";
+  const ChunkReport again = run_sweep_rows(s.manifest, 2, 6, s.dir / "runs", log);
+  EXPECT_EQ(again.skipped, 2u);
+  EXPECT_EQ(again.done, 2u);
+  EXPECT_EQ(read(result_path(s.dir / "runs", 2)), before);
+  EXPECT_EQ(fs::last_write_time(result_path(s.dir / "runs", 2)), written);
+  std::ostringstream table;
+  EXPECT_TRUE(gather_sweep(s.manifest, "abc", s.dir / "runs", table).empty());
+  const auto lines = [](const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) out.push_back(line);
+    return out;
+  };
+  const auto rows = lines(table.str());
+  ASSERT_EQ(rows.size(), 8u);  // the comment, the header, six runs in order
+  EXPECT_EQ(rows[0], "# unidyn sweep of " + s.model + ", manifest sha256 abc, 6 runs");
+  for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(rows[k + 2].substr(0, 2), std::to_string(k) + ",");
+}
+
+TEST(SweepRun, MissingRunsAreNamedAndAFailedRunIsARecord) {
+  // runs 0 and 2 not run yet: named
+  Sweep s("double-pendulum", {"theta1=0.1:0.2:3"}, 0.1);
+  std::ostringstream log, table;
+  run_sweep_rows(s.manifest, 1, 2, s.dir / "runs", log);
+  EXPECT_EQ(gather_sweep(s.manifest, "h", s.dir / "runs", table), (std::vector<std::size_t>{0, 2}));
+  // the heavy top started at θ = 0, the 3-1-3 angles' gimbal lock: its start fails, recorded
+  Sweep gimbal("heavy-top", {"theta=0:0.1:2"}, 0.1);
+  const ChunkReport report = run_sweep_rows(gimbal.manifest, 0, 2, gimbal.dir / "runs", log);
+  EXPECT_EQ(report.failed, 1u);
+  const std::string failed = read(result_path(gimbal.dir / "runs", 0));
+  EXPECT_NE(failed.find(",0,0,0,"), std::string::npos) << failed;
+  EXPECT_NE(failed.find("gimbal lock"), std::string::npos) << failed;
+}
+
+TEST(SweepRun, AModelChangedSinceThePlanIsRefused) {
+  Sweep s("double-pendulum", {"theta1=0.1:0.2:2"}, 0.1);
+  std::ofstream(s.model, std::ios::app) << "# edited\n";
+  std::ostringstream log;
+  EXPECT_THROW(run_sweep_rows(s.manifest, 0, 2, s.dir / "runs", log), std::invalid_argument);
+  EXPECT_THROW(run_sweep_rows(s.manifest, 0, 3, s.dir / "runs", log), std::invalid_argument);
+}
+
+TEST(SweepRun, TasksCoverTheRunsOnce) {
+  std::vector<int> covered(23, 0);
+  for (std::size_t task = 0; task < 5; ++task) {
+    const auto [first, last] = task_rows(23, 5, task);
+    for (std::size_t k = first; k < last; ++k) ++covered[k];
+  }
+  EXPECT_EQ(covered, std::vector<int>(23, 1));
+  EXPECT_THROW(task_rows(23, 5, 5), std::invalid_argument);
+  EXPECT_THROW(task_rows(23, 0, 0), std::invalid_argument);
+  const std::string slurm = slurm_script("/bin/unidyn", "/m.sweep.yaml", 23, 5);
+  EXPECT_NE(slurm.find("#SBATCH --array=0-4\n"), std::string::npos);
+  EXPECT_NE(slurm.find("'/bin/unidyn' sweep run '/m.sweep.yaml' --chunk 5 --task "
+                       "\"$SLURM_ARRAY_TASK_ID\""),
+            std::string::npos);
+  EXPECT_NE(parallel_script("/bin/unidyn", "/m.sweep.yaml", 23, 5).find("seq 0 4 | parallel"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace unidyn
