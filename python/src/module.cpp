@@ -44,8 +44,8 @@ RunRequest request(std::optional<double> t_end, std::optional<double> output_ste
 // q̈ (and λ) at one state (1-D q, q̇) or at each row of 2-D ones.
 py::tuple rhs(const PythonModel& model, const Array& q, const Array& qdot, double t,
               const Settings& set) {
-  const auto n = static_cast<py::ssize_t>(model.compiled().coordinate_count());
-  const auto m = static_cast<py::ssize_t>(model.compiled().constraint_count());
+  const auto n = static_cast<py::ssize_t>(model.coordinate_count());
+  const auto m = static_cast<py::ssize_t>(model.constraint_count());
   if (q.ndim() != qdot.ndim() || q.ndim() < 1 || q.ndim() > 2 || q.shape(q.ndim() - 1) != n ||
       qdot.shape(qdot.ndim() - 1) != n || (q.ndim() == 2 && q.shape(0) != qdot.shape(0))) {
     throw std::invalid_argument("rhs: q and qd must both be of " + std::to_string(n) +

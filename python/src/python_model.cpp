@@ -22,24 +22,37 @@ std::vector<std::string> setting_texts(const std::vector<std::pair<std::string, 
   return texts;
 }
 
+// The lock every use of GiNaC's expressions holds (python_model.hpp).
+std::mutex& symbolic_lock() {
+  static std::mutex lock;
+  return lock;
+}
+
 }  // namespace
 
 PythonModel::PythonModel(const std::string& source) {
+  const std::lock_guard held(symbolic_lock());
   // a text with a line break is a model's text; anything else names a file or a bundled model
   if (source.find('\n') != std::string::npos) {
-    model_.system = parse_model(source, "<string>");
-    model_.text = source;
-    model_.path = "<string>";
+    model_ = std::make_unique<cli::CommandModel>(
+        cli::CommandModel{parse_model(source, "<string>"), source, "<string>"});
   } else {
-    model_ = cli::read_command_model(source);
+    model_ = std::make_unique<cli::CommandModel>(cli::read_command_model(source));
   }
 }
 
+PythonModel::~PythonModel() {
+  const std::lock_guard held(symbolic_lock());
+  compiled_.reset();
+  model_.reset();
+}
+
 std::vector<std::pair<std::string, double>> PythonModel::parameters() const {
-  const SimulationStart start = initial_state(model_.system, {});
+  const std::lock_guard held(symbolic_lock());
+  const SimulationStart start = initial_state(system(), {});
   std::vector<std::pair<std::string, double>> out;
-  for (std::size_t k = 0; k < model_.system.parameters.size(); ++k) {
-    out.emplace_back(model_.system.parameters[k].name, start.parameters[k]);
+  for (std::size_t k = 0; k < system().parameters.size(); ++k) {
+    out.emplace_back(system().parameters[k].name, start.parameters[k]);
   }
   return out;
 }
@@ -55,12 +68,22 @@ cli::ModelCommands PythonModel::commands(const RunRequest& request) const {
   return c;
 }
 
-const CompiledSystem& PythonModel::compiled() const {
-  std::call_once(compiled_once_, [&] {
+const CompiledSystem& PythonModel::compiled_locked() const {
+  if (!compiled_) {
     compiled_ = std::make_unique<CompiledSystem>(
-        cli::command_compiled(cli::ModelCommands{}, model_, model_.system));
-  });
+        cli::command_compiled(cli::ModelCommands{}, *model_, system()));
+  }
   return *compiled_;
+}
+
+std::size_t PythonModel::coordinate_count() const {
+  const std::lock_guard held(symbolic_lock());
+  return compiled_locked().coordinate_count();
+}
+
+std::size_t PythonModel::constraint_count() const {
+  const std::lock_guard held(symbolic_lock());
+  return compiled_locked().constraint_count();
 }
 
 std::string PythonModel::derive(const std::string& method, const std::string& format,
@@ -70,16 +93,18 @@ std::string PythonModel::derive(const std::string& method, const std::string& fo
   c.format = format;
   c.form = form;
   std::ostringstream out;
-  cli::write_derivation(out, c, model_);
+  const std::lock_guard held(symbolic_lock());
+  cli::write_derivation(out, c, *model_);
   return out.str();
 }
 
 RunResult PythonModel::simulate(const RunRequest& request) const {
   const cli::ModelCommands c = commands(request);
-  const System& system = model_.system;
+  const std::lock_guard held(symbolic_lock());
+  const System& system = this->system();
   cli::CommandStart initial = cli::command_start(c, system, system);
   const SimulationOptions options = cli::options_for(system, c);
-  const CompiledSystem& code = compiled();
+  const CompiledSystem& code = compiled_locked();
   const std::vector<std::string> computed =
       cli::complete_command_start(initial, system, system, code);
   const SimulationStart& start = initial.start;
@@ -123,15 +148,21 @@ RunResult PythonModel::simulate(const RunRequest& request) const {
 void PythonModel::rhs(const double* q, const double* qdot, std::size_t count, double t,
                       const std::vector<std::pair<std::string, double>>& set, double* qddot,
                       double* lambda) const {
-  const System& system = model_.system;
   // parameters only: the states are given
   for (const auto& [name, value] : set) {
-    if (!system.find_parameter(name)) {
+    if (!system().find_parameter(name)) {
       throw std::invalid_argument("set " + name + ": not a parameter (the states are given)");
     }
   }
-  const std::vector<double> parameters = initial_state(system, set).parameters;
-  const CompiledSystem& code = compiled();
+  std::vector<double> parameters;
+  const CompiledSystem* compiled = nullptr;
+  {
+    const std::lock_guard held(symbolic_lock());
+    parameters = initial_state(system(), set).parameters;
+    compiled = &compiled_locked();
+  }
+  // the compiled code alone from here: no expression is touched
+  const CompiledSystem& code = *compiled;
   CompiledSystemData data = code.make_data();
   const auto n = static_cast<Eigen::Index>(code.coordinate_count());
   const auto m = static_cast<Eigen::Index>(code.constraint_count());
@@ -157,7 +188,8 @@ std::string PythonModel::analysis_json(const std::string& command,
   c.starts = starts;
   c.cyclic = cyclic;
   std::ostringstream out;
-  cli::write_analysis(out, command, c, model_);
+  const std::lock_guard held(symbolic_lock());
+  cli::write_analysis(out, command, c, *model_);
   return out.str();
 }
 
@@ -165,7 +197,8 @@ std::string PythonModel::report(const std::string& path, const RunRequest& reque
   cli::ModelCommands c = commands(request);
   c.output = path;
   std::ostringstream out;
-  const int status = cli::run_report(c, model_, out);
+  const std::lock_guard held(symbolic_lock());
+  const int status = cli::run_report(c, *model_, out);
   if (status != 0) throw std::runtime_error(out.str());
   return out.str();
 }

@@ -4,6 +4,13 @@
 // parameter set). What a method computes is what the command of the same name computes: the same
 // options, the same checks, the same numbers. Nothing here touches Python: the bindings
 // (module.cpp) release the interpreter's lock around the work.
+//
+// GiNaC is not thread-safe: its expressions share nodes (the numbers 0 and 1 among them) whose
+// reference counts are not atomic, so two threads that copy or free any expressions at once, of
+// one model or of two, corrupt them. Every method therefore holds one process-wide lock while it
+// touches expressions — a whole run included (the integrators set up from the model) — and rhs()
+// only while it reads the parameters: its states are evaluated in parallel by the compiled code.
+// A PythonModel is freed under the same lock.
 #pragma once
 
 #include <memory>
@@ -43,10 +50,14 @@ class PythonModel {
   // `source`: a model file, a bundled model's name, or a model's text (a text with a newline).
   // Throws ModelError (file:line:column) or std::invalid_argument.
   explicit PythonModel(const std::string& source);
+  ~PythonModel();
+  PythonModel(const PythonModel&) = delete;
+  PythonModel& operator=(const PythonModel&) = delete;
 
-  const System& system() const { return model_.system; }
-  const std::string& path() const { return model_.path; }
-  const std::string& text() const { return model_.text; }
+  // (names only are read from these without the lock: no expression is copied)
+  const System& system() const { return model_->system; }
+  const std::string& path() const { return model_->path; }
+  const std::string& text() const { return model_->text; }
   // The parameters' values in the model (before any setting).
   std::vector<std::pair<std::string, double>> parameters() const;
 
@@ -71,15 +82,18 @@ class PythonModel {
   // `unidyn report MODEL -o PATH`; returns what the command prints.
   std::string report(const std::string& path, const RunRequest& request) const;
 
-  // The compiled equations (made once, on first use).
-  const CompiledSystem& compiled() const;
+  // The compiled equations (made once, on first use) and their sizes.
+  std::size_t coordinate_count() const;
+  std::size_t constraint_count() const;
 
  private:
   // The command-line options of a request.
   cli::ModelCommands commands(const RunRequest& request) const;
 
-  cli::CommandModel model_;
-  mutable std::once_flag compiled_once_;
+  // the compiled equations, made under the lock on first use
+  const CompiledSystem& compiled_locked() const;
+
+  std::unique_ptr<cli::CommandModel> model_;
   mutable std::unique_ptr<CompiledSystem> compiled_;
 };
 

@@ -11,7 +11,9 @@
 
 Each method does what the `unidyn` command of the same name does, with the same options and checks.
 A mistake in a model raises unidyn.ModelError (a ValueError) with .file, .line and .column; other
-bad input raises ValueError; a failure RuntimeError. The work runs without the interpreter's lock.
+bad input raises ValueError; a failure RuntimeError. The work runs without the interpreter's lock
+(other Python threads go on); unidyn's runs take turns between threads of one process (GiNaC is not
+thread-safe), and `rhs` batches run in parallel: use processes for parallel runs (`sweep`).
 """
 
 import functools

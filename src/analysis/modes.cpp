@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "unidyn/numeric/number_text.hpp"
@@ -182,6 +183,17 @@ ModeAnalysis analyse_modes(const Linearization& L) {
                (zeros > 0 ? " (zero: a neighbouring steady motion, neutral)" : "") +
                "; whether the nonlinear terms keep the motion bounded is not decided here";
   return out;
+}
+
+std::string eigenvalue_text(const Mode& mode, double tolerance) {
+  const double re = std::abs(mode.eigenvalue.real()) <= tolerance ? 0.0 : mode.eigenvalue.real();
+  const double im = std::abs(mode.eigenvalue.imag());
+  const auto six_digits = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", x);
+    return std::string(text);
+  };
+  return im == 0.0 ? six_digits(re) : six_digits(re) + "\u00b1" + six_digits(im) + "i";
 }
 
 }  // namespace unidyn

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "command_model.hpp"
+#include "unidyn/analysis/operating_point.hpp"
 #include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/numeric/digest.hpp"
@@ -70,7 +71,7 @@ int run_plan(const SweepCommand& c) {
   if (grid.empty() && random.empty()) {
     throw std::invalid_argument("a sweep needs --grid NAME=FROM:TO:COUNT or --random NAME=U(A,B)");
   }
-  const SweepManifest manifest =
+  SweepManifest manifest =
       plan_sweep(fs::absolute(model.path).lexically_normal().string(), model.text,
                  {c.t_end, c.output_step, c.rtol, c.method}, grid, random, c.samples, c.seed);
   // every name is one a run can set (a parameter, q or der(q)), the options are a run's options,
@@ -81,6 +82,8 @@ int run_plan(const SweepCommand& c) {
   }
   initial_state(model.system, first);
   simulation_options(model.system.simulate, manifest.options);
+  manifest.modes_at = c.modes_at;
+  parse_given_values(model.system, manifest.modes_at);
   const std::string path =
       c.output.empty() ? fs::path(model.path).stem().string() + ".sweep.yaml" : c.output;
   write_text(path, manifest_text(manifest));
@@ -158,6 +161,9 @@ void add_sweep_command(CLI::App& app, SweepCommand& c) {
   c.plan->add_option("--random", c.random, "NAME=U(A,B) or NAME=N(MEAN,SD): drawn per run");
   c.plan->add_option("--samples", c.samples, "random draws per grid point")->capture_default_str();
   c.plan->add_option("--seed", c.seed, "the draws' seed")->capture_default_str();
+  c.plan->add_option("--modes-at", c.modes_at,
+                     "NAME=VALUE of an operating point (as `unidyn modes --at`): each run also "
+                     "gives the stability and eigenvalues there with its parameters");
   c.plan->add_option("--t-end", c.t_end, "end time of every run");
   c.plan->add_option("--output-step", c.output_step, "time between rows");
   c.plan->add_option("--method", c.method, "dopri5 | rk4 | cvode | rattle");

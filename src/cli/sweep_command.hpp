@@ -19,6 +19,7 @@ struct SweepCommand {
   std::string output;   // plan: the manifest; gather: the table; emit: the script
   std::string results;  // run, gather: the results' directory (default MANIFEST.runs)
   std::vector<std::string> grid, random;
+  std::vector<std::string> modes_at;  // plan: NAME=VALUE of an operating point
   std::size_t samples = 1;
   std::uint64_t seed = 1;
   double t_end = 0, output_step = 0, rtol = 0;

@@ -20,12 +20,6 @@ std::string eigenvalues_json(const ModeAnalysis& modes) {
 
 }  // namespace
 
-std::string eigenvalue_text(const Mode& mode, double tolerance) {
-  const double re = std::abs(mode.eigenvalue.real()) <= tolerance ? 0.0 : mode.eigenvalue.real();
-  const double im = std::abs(mode.eigenvalue.imag());
-  return im == 0.0 ? fmt::format("{:.6g}", re) : fmt::format("{:.6g}\u00b1{:.6g}i", re, im);
-}
-
 // The equilibria found: for each its coordinates (an ignorable one "any"), verdict and reason,
 // eigenvalues, the dimension of a continuum it lies on, and the energy method's word.
 std::string equilibria_json(const ReportModel& model) {

@@ -16,10 +16,6 @@ std::string page_number(double x);
 // ["a", "b"].
 std::string json_names(const std::vector<std::string>& names);
 
-// An eigenvalue as text: "-0.38±3.87i" for a complex pair (one of each is listed, analysis/modes),
-// six significant digits, a real part within `tolerance` of 0 written 0.
-std::string eigenvalue_text(const Mode& mode, double tolerance);
-
 // The 3-D scene: the bodies' shapes, the particles' spheres, the box the motion stays in, the
 // owners of the constraint forces drawn.
 std::string scene_json(const ReportModel& model, const ReportRun& run);

@@ -165,7 +165,15 @@ std::string manifest_text(const SweepManifest& m) {
   for (std::size_t k = 0; k < m.names.size(); ++k) {
     out += (k ? ", " : "") + unidyn::quoted(m.names[k]);
   }
-  out += "]\nruns:\n";
+  out += "]\n";
+  if (!m.modes_at.empty()) {
+    out += "modes_at: [";
+    for (std::size_t k = 0; k < m.modes_at.size(); ++k) {
+      out += (k ? ", " : "") + unidyn::quoted(m.modes_at[k]);
+    }
+    out += "]\n";
+  }
+  out += "runs:\n";
   for (const SweepRun& run : m.runs) {
     out += "  - [" + std::to_string(run.index) + ", " + std::to_string(run.seed);
     for (const double v : run.values) out += ", " + number(v);
@@ -200,6 +208,7 @@ SweepManifest read_manifest(const std::string& path) {
     if (options["rtol"]) m.options.rtol = options["rtol"].as<double>();
     m.seed = root["seed"].as<std::uint64_t>();
     m.names = root["names"].as<std::vector<std::string>>();
+    if (root["modes_at"]) m.modes_at = root["modes_at"].as<std::vector<std::string>>();
     for (const YAML::Node& row : root["runs"]) {
       if (!row.IsSequence() || row.size() != m.names.size() + 2) {
         throw fail(row.Mark(), fmt::format("a run is [index, seed, {} values]", m.names.size()));

@@ -7,10 +7,14 @@
 
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "unidyn/analysis/linearization.hpp"
+#include "unidyn/analysis/modes.hpp"
 #include "unidyn/equations/kane.hpp"
+#include "unidyn/equations/lagrange.hpp"
 #include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/io/csv.hpp"
 #include "unidyn/io/model_file.hpp"
@@ -27,6 +31,7 @@ std::string result_header(const SweepManifest& m, const std::vector<std::string>
   std::string out = "run,seed";
   for (const auto& name : m.names) out += "," + csv_field(name);
   out += ",ok,rows,events,energy_drift,message";
+  if (!m.modes_at.empty()) out += ",stability,eigenvalues";
   for (const auto& c : columns) out += "," + csv_field("final." + c);
   return out + "\n";
 }
@@ -62,13 +67,41 @@ void write_atomically(const fs::path& path, const std::string& text) {
   }
 }
 
+// The modes of the manifest's operating point with a run's parameters: its verdict and
+// eigenvalues ("a±bi" each, separated by spaces), or why there are none.
+struct ModesAt {
+  const System& system;
+  const CompiledSystem& compiled;  // of Lagrange's equations, as the analysis commands use
+  std::vector<GivenValue> given;
+};
+std::string modes_fields(const ModesAt& at,
+                         const std::vector<std::pair<std::string, double>>& sets) {
+  try {
+    // the operating point's values are the manifest's; a run's q and der(q) are its start's
+    std::vector<std::pair<std::string, double>> parameters;
+    for (const auto& [name, value] : sets) {
+      if (at.system.find_parameter(name)) parameters.emplace_back(name, value);
+    }
+    const OperatingPoint point = operating_point(at.system, at.compiled, at.given,
+                                                 initial_state(at.system, parameters).parameters);
+    const ModeAnalysis modes = analyse_modes(linearize(at.system, at.compiled, point));
+    std::string values;
+    for (const Mode& mode : modes.modes) {
+      values += (values.empty() ? "" : " ") + eigenvalue_text(mode, modes.tolerance);
+    }
+    return "," + csv_field(to_string(modes.verdict)) + "," + csv_field(values);
+  } catch (const std::exception& e) {
+    return ",none," + csv_field(e.what());
+  }
+}
+
 // One run: its start from the manifest's values, the simulation, its result row.
 struct RunRow {
   std::string text;
   bool ok = false;
 };
 RunRow run_one(const SweepManifest& m, const SweepRun& run, const System& system,
-               const CompiledSystem& compiled, std::size_t columns) {
+               const CompiledSystem& compiled, std::size_t columns, const ModesAt* modes) {
   std::vector<std::pair<std::string, double>> sets;
   for (std::size_t k = 0; k < m.names.size(); ++k) sets.emplace_back(m.names[k], run.values[k]);
   std::string row = std::to_string(run.index) + "," + std::to_string(run.seed);
@@ -86,8 +119,11 @@ RunRow run_one(const SweepManifest& m, const SweepRun& run, const System& system
     s.message = e.what();
   }
   row += fmt::format(",{},{},{},{},{}", s.ok ? 1 : 0, s.rows, s.phases.size(),
-                     s.has_energy ? fmt::format("{}", s.energy_relative_drift) : "",
+                     s.has_energy && s.energy_not_conserved.empty()
+                         ? fmt::format("{}", s.energy_relative_drift)
+                         : "",
                      csv_field(s.message));
+  if (modes) row += modes_fields(*modes, sets);
   for (std::size_t c = 0; c < columns; ++c) {
     row += c < last.size() ? fmt::format(",{}", last[c]) : ",";
   }
@@ -124,6 +160,13 @@ ChunkReport run_sweep_rows(const SweepManifest& m, std::size_t first, std::size_
   const CompiledSystem compiled(system, kane_equations(system), compile);
   const std::vector<std::string> columns = simulation_columns(system);
   const std::string header = result_header(m, columns);
+  // the operating point's modes, when asked: Lagrange's equations on the tape, as `unidyn modes`
+  std::optional<CompiledSystem> lagrange;
+  std::optional<ModesAt> modes;
+  if (!m.modes_at.empty()) {
+    lagrange.emplace(system, lagrange_equations(system));
+    modes.emplace(ModesAt{system, *lagrange, parse_given_values(system, m.modes_at)});
+  }
   fs::create_directories(directory);
   ChunkReport report;
   for (std::size_t k = first; k < last; ++k) {
@@ -132,7 +175,8 @@ ChunkReport run_sweep_rows(const SweepManifest& m, std::size_t first, std::size_
       ++report.skipped;
       continue;
     }
-    const RunRow row = run_one(m, m.runs[k], system, compiled, columns.size());
+    const RunRow row =
+        run_one(m, m.runs[k], system, compiled, columns.size(), modes ? &*modes : nullptr);
     write_atomically(path, header + row.text);
     ++report.done;
     if (!row.ok) ++report.failed;

@@ -38,6 +38,12 @@ TEST(Package, EmbedBuiltAgainstTheInstalledPackage) {
       << read_file(log);
   EXPECT_TRUE(fs::exists(prefix / "lib/cmake/unidyn/unidynConfig.cmake"));
   EXPECT_TRUE(fs::exists(prefix / "include/unidyn/integrate/simulation.hpp"));
+  // everything under the prefix: the Python package too (nothing written elsewhere)
+  bool python_package = false;
+  for (const auto& entry : fs::recursive_directory_iterator(prefix / "lib")) {
+    python_package = python_package || entry.path().filename() == "__init__.py";
+  }
+  EXPECT_TRUE(python_package);
   ASSERT_EQ(shell("cmake -S '" + (source / "examples/embed").string() + "' -B '" +
                       (work / "build").string() + "' -G Ninja -DCMAKE_PREFIX_PATH='" +
                       prefix.string() + "' && cmake --build '" + (work / "build").string() + "'",

@@ -120,6 +120,10 @@ INSTANTIATE_TEST_SUITE_P(Bundled, Report,
 
 // The size a user gets for a 10 s run (the bicycle: four bodies, 1001 rows).
 TEST(Report, TenSecondsUnderTwoMegabytes) {
+#ifdef UNIDYN_SANITIZED
+  // the page is the same bytes in both builds (25 s of the bicycle under the sanitizers)
+  GTEST_SKIP() << "the page's size is measured in the plain build";
+#endif
   const std::string page = temp_path("bicycle.html");
   const Outcome made = run("report bicycle --t-end 10 -o '" + page + "'");
   ASSERT_EQ(made.status, 0) << made.out << made.err;

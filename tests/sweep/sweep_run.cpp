@@ -9,6 +9,8 @@
 
 #include <unistd.h>
 
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -112,6 +114,36 @@ TEST(SweepRun, MissingRunsAreNamedAndAFailedRunIsARecord) {
   const std::string failed = read(result_path(gimbal.dir / "runs", 0));
   EXPECT_NE(failed.find(",0,0,0,"), std::string::npos) << failed;
   EXPECT_NE(failed.find("gimbal lock"), std::string::npos) << failed;
+}
+
+// The bead on the hoop at the bottom, φ = π (φ from the top, φ'' = (Ω² cos φ + g/R0) sin φ): δφ'' =
+// (Ω² − g/R0) δφ, stable with λ = ±i √(g/R0 − Ω²) below Ω² = g/R0 and unstable with
+// λ = ±√(Ω² − g/R0) above it — per run, with the run's Ω.
+TEST(SweepRun, EachRunsModesAtTheOperatingPoint) {
+  Sweep s("rotating-hoop", {"Omega=2:6:3"}, 0.1);
+  s.manifest.modes_at = {"phi=pi"};
+  std::ostringstream log;
+  run_sweep_rows(s.manifest, 0, 3, s.dir / "runs", log);
+  const System system = load_model(s.model);
+  const SimulationStart start = initial_state(system, {});
+  const double g = start.parameters[*system.find_parameter("g")];
+  const double R0 = start.parameters[*system.find_parameter("R0")];
+  const auto six = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", x);
+    return std::string(text);
+  };
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double omega = 2.0 + 2.0 * static_cast<double>(k);
+    const double square = omega * omega - g / R0;
+    const std::string expected =
+        square < 0 ? ",linearly stable,0\u00b1" + six(std::sqrt(-square)) + "i,"
+                   : ",unstable," + six(std::sqrt(square)) + " " + six(-std::sqrt(square)) + ",";
+    const std::string result = read(result_path(s.dir / "runs", k));
+    EXPECT_NE(result.find(expected), std::string::npos) << expected << "\n" << result;
+  }
+  EXPECT_NE(read(result_path(s.dir / "runs", 0)).find(",stability,eigenvalues,"),
+            std::string::npos);
 }
 
 TEST(SweepRun, AModelChangedSinceThePlanIsRefused) {

@@ -54,4 +54,8 @@ ModeAnalysis analyse_modes(const Linearization& linearization);
 // "asymptotically stable", "linearly stable", "unstable", "inconclusive".
 std::string to_string(Stability s);
 
+// A mode's eigenvalue as text: "-0.38±3.87i" for a complex pair (one of each is listed), six
+// significant digits, a real part within `tolerance` of 0 written 0.
+std::string eigenvalue_text(const Mode& mode, double tolerance);
+
 }  // namespace unidyn

@@ -33,6 +33,9 @@ struct SweepManifest {
   std::vector<std::string> names;
   std::uint64_t seed = 0;
   std::vector<SweepRun> runs;
+  // NAME=VALUE of an operating point (as `unidyn modes --at`): when given, each run also reports
+  // the eigenvalues and stability of its linearisation there, with the run's parameters.
+  std::vector<std::string> modes_at;
 };
 
 // NAME=FROM:TO:COUNT: COUNT values evenly from FROM to TO (both included; COUNT 1: FROM).
