@@ -1,10 +1,11 @@
 // Running a chunk of a sweep (`unidyn sweep run MANIFEST --rows A:B`) and gathering the results
 // (`unidyn sweep gather`). Each run's result is one file, <dir>/run-<index>.csv: its index, seed
 // and values, whether it succeeded, its rows and events, the energy's relative drift (empty where
-// the energy is not conserved), why it failed, and the last row of its simulation ("final.<column>"). A result is written whole or not
-// at all (a temporary file, synced, renamed into place), and a run whose result is there is not
-// run again: a chunk can be run twice, by two workers at once, or after a crash, and the results
-// are the same files. The model is compiled once per chunk (its parameters are inputs of the
+// the energy is not conserved), why it failed, with --modes-at the stability and eigenvalues at
+// the operating point, and the last row of its simulation ("final.<column>"). A result is written
+// whole or not at all (a temporary file, synced, renamed into place), and a run whose result is
+// there is not run again: a chunk can be run twice, by two workers at once, or after a crash, and
+// the results are the same files. The model is compiled once per chunk (its parameters are inputs of the
 // code), native code shared through its cache.
 #pragma once
 
