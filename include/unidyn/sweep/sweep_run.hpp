@@ -5,8 +5,8 @@
 // the operating point, and the last row of its simulation ("final.<column>"). A result is written
 // whole or not at all (a temporary file, synced, renamed into place), and a run whose result is
 // there is not run again: a chunk can be run twice, by two workers at once, or after a crash, and
-// the results are the same files. The model is compiled once per chunk (its parameters are inputs of the
-// code), native code shared through its cache.
+// the results are the same files. The model is compiled once per chunk (its parameters are
+// inputs of the code), native code shared through its cache.
 #pragma once
 
 #include <filesystem>
