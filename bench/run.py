@@ -5,7 +5,9 @@ Usage: python3 bench/run.py BUILD_DIR [--quick]
 
 BUILD_DIR holds the built benchmark programs (bench/unidyn_bench, bench/peers/peer_mujoco,
 bench/peers/peer_simbody). Every figure below is measured in this one run; the tables go to
-standard output and to bench/RESULTS.md. --quick shrinks the sweeps (for a smoke test).
+standard output and to bench/RESULTS.md. --quick shrinks the sweeps and the models (a smoke test
+of every part, about a minute; CI runs it) and leaves bench/RESULTS.md alone. A part that fails is reported and the run goes on; the exit
+status is then 1.
 
 The models are those of bench/MODELS.md. Each comparison first checks that the tools compute the
 same thing (accelerations at random states, final states against a tight reference) and prints
@@ -31,11 +33,11 @@ ROOT = os.path.dirname(HERE)
 # ---------------------------------------------------------------------------------------------
 # Running the programs
 
-def run(command, stdin=None, timeout=1800):
+def run(command, stdin=None, timeout=1800, env=None):
     """Run a command; its standard output (raises on a non-zero exit)."""
     # in a scratch directory: MuJoCo writes MUJOCO_LOG.TXT where it runs
     result = subprocess.run(command, input=stdin, capture_output=True, text=True, timeout=timeout,
-                            cwd=tempfile.gettempdir())
+                            cwd=tempfile.gettempdir(), env=env)
     if result.returncode != 0:
         raise RuntimeError(f"{' '.join(command)} failed ({result.returncode}): "
                            f"{result.stderr.strip()[:500]}")
@@ -150,9 +152,13 @@ class Bench:
     def have(self, program):
         return os.path.exists(program)
 
+    def sympy_version(self):
+        """The version of the SymPy the comparisons run (that of this interpreter)."""
+        return run([sys.executable, "-c", "import sympy; print(sympy.__version__)"]).strip()
+
     # 1. Derivation against SymPy ---------------------------------------------------------------
     def derivation(self):
-        self.say("## 1. Derivation: unidyn against SymPy 1.14 mechanics\n")
+        self.say(f"## 1. Derivation: unidyn against SymPy {self.sympy_version()} mechanics\n")
         self.say("Time to derive the equations of motion, best of 3 for unidyn, one run for SymPy "
                  "(unidyn: read the model and form M q̈ = f, by Lagrange's equations and by Kane's "
                  "form through partial velocities; SymPy: build the system and form the equations "
@@ -161,7 +167,7 @@ class Bench:
         self.say("| model | unidyn Lagrange | SymPy Lagrange | ratio | unidyn Kane | SymPy Kane "
                  "| ratio | max q̈ difference |")
         self.say("|---|---|---|---|---|---|---|---|")
-        links = [1, 2, 3, 4, 6] if self.quick else list(range(1, 11))
+        links = [1, 2, 3] if self.quick else list(range(1, 11))
         models = [f"pendulum-{n}" for n in links] + ["heavy-top", "rolling-disk"]
         limit = {"lagrange": 900, "kane": 900}
         for model in models:
@@ -205,8 +211,8 @@ class Bench:
     def analysis(self):
         self.say("## 8. Analysis: linearisation and modes against SymPy's Linearizer\n")
         self.say("Whole `unidyn` processes (read, derive, compile, complete the operating point, "
-                 "linearise with exact derivatives, eigenvalues), best of 3; SymPy 1.14: "
-                 "`KanesMethod` with the constraints' dependent coordinate and speeds, then "
+                 "linearise with exact derivatives, eigenvalues), best of 3; SymPy "
+                 f"{self.sympy_version()}: `KanesMethod` with the constraints' dependent coordinate and speeds, then "
                  "`linearize(A_and_B=True)` at the operating point (bench/sympy/linearize.py), one "
                  "run, derivation and linearisation timed apart. The rolling disk upright at "
                  "spin 10 rad/s; the benchmark bicycle upright at 4.6 m/s, and a sweep of 1000 "
@@ -252,6 +258,70 @@ class Bench:
         self.say(f"| bicycle, 1000 speeds | {seconds:.2f} s | not run | not run | | weave and "
                  f"capsize at {' and '.join(speeds)} m/s (Meijaard et al.: 4.29238253634111 and "
                  f"6.02426201538837) |")
+        self.say()
+
+    # 9. Ensembles: the overhead of a sweep --------------------------------------------------------
+    def ensembles(self):
+        runs = 6 if self.quick else 40
+        self.say("## 9. Ensembles: a sweep against plain `simulate` calls\n")
+        self.say(f"{runs} runs of the double pendulum, m1 on a grid from 1 to 2, 1000 s each at "
+                 "rtol 1e-10 (about 0.15 s a run). From Python, in one process: `unidyn.sweep` "
+                 "(serial) against a loop of `Model.simulate` with the same settings, the model "
+                 "compiled before either is timed — the sweep's overhead, goal of issue 16: ≤ 5 %. "
+                 "From the command line: `unidyn sweep run` over the manifest of `sweep plan` (one "
+                 "process, the model read and compiled once, a result file per run) against one "
+                 "`unidyn simulate` process per run writing its CSV of 100 001 rows. The final "
+                 "states of the sweep and of `simulate` are compared.\n")
+        cli = os.path.join(self.build, "unidyn")
+        common = ["--t-end", "1000", "--rtol", "1e-10"]
+        cells = ["not built", "", ""]
+        package = os.path.join(self.build, "python")
+        if os.path.isdir(os.path.join(package, "unidyn")):
+            script = f"""
+import json, time, unidyn
+model = unidyn.load("double-pendulum")
+settings = [{{"m1": 1 + i / ({runs} - 1)}} for i in range({runs})]
+options = dict(t_end=1000.0, rtol=1e-10)
+model.simulate(t_end=1.0)  # compiled before either is timed
+start = time.perf_counter()
+loop = [model.simulate(set=s, **options) for s in settings]
+looped = time.perf_counter() - start
+start = time.perf_counter()
+swept = unidyn.sweep(model, settings, **options)
+print(json.dumps({{"loop": looped, "sweep": time.perf_counter() - start}}))
+"""
+            env = dict(os.environ, PYTHONPATH=package, UNIDYN_EXECUTABLE=cli)
+            python = json.loads(run(["/usr/bin/python3", "-c", script], env=env).splitlines()[-1])
+            cells = [f"{python['loop']:.2f} s", f"{python['sweep']:.2f} s",
+                     f"{(python['sweep'] / python['loop'] - 1) * 100:+.1f} %"]
+        with tempfile.TemporaryDirectory() as scratch:
+            manifest = os.path.join(scratch, "m.yaml")
+            run([cli, "sweep", "plan", "double-pendulum", "--grid", f"m1=1:2:{runs}", "-o",
+                 manifest] + common)
+            # one process per run
+            finals = []
+            start = time.perf_counter()
+            for i in range(runs):
+                csv = os.path.join(scratch, "run.csv")
+                run([cli, "simulate", "double-pendulum", "--set", f"m1={1 + i / (runs - 1)!r}",
+                     "-o", csv] + common)
+                with open(csv) as f:
+                    finals.append([float(x) for x in f.read().strip().splitlines()[-1].split(",")])
+            processes = time.perf_counter() - start
+            # the sweep: one process
+            start = time.perf_counter()
+            run([cli, "sweep", "run", manifest])
+            swept = time.perf_counter() - start
+            table = run([cli, "sweep", "gather", manifest]).strip().splitlines()
+            first = table[1].split(",").index("final.t")
+            rows = [[float(x) for x in line.split(",")[first:]] for line in table[2:]]
+            difference = max_relative_difference(rows, finals)
+        self.say("| runs | Python: loop of `simulate` | `unidyn.sweep` | sweep's overhead | "
+                 "one `unidyn simulate` per run | `unidyn sweep run` | ratio | largest "
+                 "final-state difference |")
+        self.say("|---|---|---|---|---|---|---|---|")
+        self.say(f"| {runs} | " + " | ".join(cells) + f" | {processes:.2f} s | {swept:.2f} s | "
+                 f"{processes / swept:.2f}× | {difference:.1e} |")
         self.say()
 
     # 7. Micro benchmarks -------------------------------------------------------------------------
@@ -309,7 +379,7 @@ class Bench:
         self.say("| model | tool | method | setting | wall time | energy error | final-state "
                  "error | ratio to unidyn |")
         self.say("|---|---|---|---|---|---|---|---|")
-        t_end = "20" if self.quick else "100"
+        t_end = "2" if self.quick else "100"
         for model in ("heavy-top", "pendulum-2"):
             reference = run_json([self.unidyn, "simulate", model, "--t-end", t_end, "--method",
                                   "dopri5", "--rtol", "1e-13"])["final_state"]
@@ -403,7 +473,8 @@ class Bench:
             with open(pendulum, "w") as f:
                 f.write(pendulum_model(10))
             bicycle = os.path.join(ROOT, "models", "bicycle.yaml")
-            for name, path in (("pendulum-10", pendulum), ("bicycle", bicycle)):
+            systems = [("pendulum-10", pendulum), ("bicycle", bicycle)][:1 if self.quick else 2]
+            for name, path in systems:
                 cells, code = [], ""
                 one = dict(os.environ, UNIDYN_PROCESSES="1")
                 for extra, env in ((["check"], None), (["derive", "--form", "matrix"], None),
@@ -411,7 +482,7 @@ class Bench:
                                    (["derive", "--format", "c", "--method", "kane"], None)):
                     try:
                         best = None
-                        for _ in range(3):
+                        for _ in range(1 if self.quick else 3):
                             start = time.perf_counter()
                             out = subprocess.run([cli] + extra + [path], capture_output=True,
                                                  text=True, timeout=limit, check=True,
@@ -427,7 +498,7 @@ class Bench:
             # where derive's time goes: the phases `derive --timings` reports
             self.say("Where `derive` (textbook form) spends its time, by `derive --timings`:\n")
             phases = {}
-            for name, path in (("pendulum-10", pendulum), ("bicycle", bicycle)):
+            for name, path in systems:
                 try:
                     err = subprocess.run([cli, "derive", path, "--timings"], capture_output=True,
                                          text=True, timeout=limit, check=True).stderr
@@ -533,15 +604,25 @@ def main():
     bench.say(machine())
     bench.say("Reproduce: `bash bench/run.sh` (builds into build-bench/ and runs "
               "`python3 bench/run.py build-bench`).\n")
+    failed = []
     for part in (bench.derivation, bench.right_hand_side, bench.time_to_accuracy, bench.growth,
-                 bench.long_runs, bench.large_systems, bench.analysis, bench.micro):
+                 bench.long_runs, bench.large_systems, bench.analysis, bench.ensembles,
+                 bench.micro):
+        start = time.perf_counter()
         try:
             part()
         except Exception as error:  # report and go on with the other comparisons
             bench.say(f"\n(this part failed: {error})\n")
+            failed.append(part.__name__)
+        print(f"bench: {part.__name__} took {time.perf_counter() - start:.1f} s", file=sys.stderr,
+              flush=True)
     if not arguments.quick:
         with open(os.path.join(HERE, "RESULTS.md"), "w") as f:
             f.write("\n".join(bench.lines) + "\n")
+    # a broken comparison fails the run (CI runs --quick), after every other part has run
+    if failed:
+        print(f"bench: {len(failed)} part(s) failed: {', '.join(failed)}", file=sys.stderr)
+        sys.exit(1)
 
 
 if __name__ == "__main__":

@@ -19,7 +19,11 @@
 namespace unidyn::test {
 
 inline std::string model_path(const std::string& name) {
-  return std::string(UNIDYN_MODELS_DIR) + "/" + name + ".yaml";
+  // appended rather than concatenated: GCC 12 at -O1 misreads `std::string(..) + "/"` as an
+  // out-of-bounds copy (-Warray-bounds) once <string> comes from a precompiled header
+  std::string path = UNIDYN_MODELS_DIR;
+  path.append("/").append(name).append(".yaml");
+  return path;
 }
 
 struct ModelRun {
