@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "unidyn/equations/friction.hpp"
+#include "unidyn/numeric/cholesky.hpp"
 
 namespace unidyn {
 
@@ -140,6 +141,7 @@ CompiledSystemData CompiledSystem::make_data() const {
   data.outputs.resize(std::max({dynamics_.output_count(), constraints_.output_count(),
                                 observer_.output_count(), friction_.output_count()}));
   data.mass_matrix.resize(n_, n_);
+  data.mass_factor.resize(n_ * n_);
   data.forcing.resize(n_);
   data.constraint_matrix.resize(m_, n_);
   data.constraint_bias.resize(m_);
@@ -179,6 +181,7 @@ void CompiledSystem::solve(double t, const Eigen::VectorXd& q, const Eigen::Vect
   data.mass_matrix =
       Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
           out, N, N);
+  std::copy(out, out + n_ * n_, data.mass_factor.begin());
   data.forcing = Eigen::Map<const Eigen::VectorXd>(out + n_ * n_, N);
   data.constraint_matrix =
       Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
@@ -218,18 +221,24 @@ void CompiledSystem::solve_with(double t, const Eigen::MatrixXd& A, const Eigen:
     return;
   }
   // M = L Lᵀ: the mass matrix of a well-posed model is positive definite
-  const Eigen::LLT<Eigen::MatrixXd> llt(data.mass_matrix);
-  if (llt.info() != Eigen::Success) {
+  double* factor = data.mass_factor.data();
+  if (!cholesky_factor(factor, n_)) {
     // M is only semi-definite when coordinates are redundant (the four Euler parameters of a
     // body); the constraints then make the saddle-point system regular.
     solve_saddle_point(t, A, b, C ? *C : Eigen::MatrixXd(A.transpose()), qddot, lambda, data);
     return;
   }
-  qddot = llt.solve(data.forcing);
+  // M⁻¹ X, column by column
+  const auto solve_columns = [&](Eigen::MatrixXd& X) {
+    for (Eigen::Index j = 0; j < X.cols(); ++j) cholesky_solve(factor, n_, X.col(j).data());
+  };
+  qddot = data.forcing;
+  cholesky_solve(factor, n_, qddot.data());
   lambda.resize(A.rows());
   if (C && A.rows() > 0) {
     // (A M⁻¹ C) λ = −b − A M⁻¹ f, then q̈ = M⁻¹ (f + C λ): not symmetric
-    const Eigen::MatrixXd MinvC = llt.solve(*C);
+    Eigen::MatrixXd MinvC = *C;
+    solve_columns(MinvC);
     const Eigen::FullPivLU<Eigen::MatrixXd> lu(A * MinvC);
     if (!lu.isInvertible()) {
       throw std::runtime_error("the constraints are dependent at t = " + std::to_string(t) +
@@ -239,7 +248,9 @@ void CompiledSystem::solve_with(double t, const Eigen::MatrixXd& A, const Eigen:
     qddot += MinvC * lambda;
   } else if (A.rows() > 0) {
     // (A M⁻¹ Aᵀ) λ = −b − A M⁻¹ f, then q̈ = M⁻¹ (f + Aᵀ λ)
-    const Eigen::MatrixXd MinvAt = llt.solve(A.transpose());
+    Eigen::MatrixXd& MinvAt = data.inverse_mass_transposed_constraints;
+    MinvAt = A.transpose();
+    solve_columns(MinvAt);
     const Eigen::MatrixXd schur = A * MinvAt;
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(schur);
     const double scale = schur.diagonal().cwiseAbs().maxCoeff();

@@ -46,6 +46,9 @@ struct CompiledSystemData {
   std::vector<double> inputs;
   std::vector<double> outputs;
   Eigen::MatrixXd mass_matrix;
+  // M's Cholesky factor (numeric/cholesky.hpp, row-major) and M⁻¹ Aᵀ, of the last solve
+  std::vector<double> mass_factor;
+  Eigen::MatrixXd inverse_mass_transposed_constraints;
   Eigen::VectorXd forcing;
   Eigen::MatrixXd constraint_matrix;
   Eigen::VectorXd constraint_bias;
