@@ -2,6 +2,7 @@
 #include "unidyn/integrate/rattle.hpp"
 
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
@@ -14,6 +15,21 @@ namespace {
 double relative_change(const Eigen::VectorXd& dx, const Eigen::VectorXd& x) {
   if (dx.size() == 0) return 0.0;
   return dx.cwiseAbs().maxCoeff() / (1.0 + x.cwiseAbs().maxCoeff());
+}
+
+// (Yoshida 1990) The weights γ_i of a symmetric composition of RATTLE of the given order: the step
+// h is made of substeps γ_1 h, …, γ_s h (Σ γ_i = 1). Order 4: the triple jump γ = (a, 1 − 2a, a),
+// a = 1 / (2 − 2^{1/3}); order 6: Yoshida's solution A, seven substeps (w3 w2 w1 w0 w1 w2 w3).
+std::span<const double> composition_weights(int order) {
+  static const double second[] = {1.0};
+  static const double a = 1.0 / (2.0 - std::cbrt(2.0));
+  static const double fourth[] = {a, 1.0 - 2.0 * a, a};
+  static const double w1 = -1.17767998417887, w2 = 0.235573213359357, w3 = 0.784513610477560;
+  static const double w0 = 1.0 - 2.0 * (w1 + w2 + w3);
+  static const double sixth[] = {w3, w2, w1, w0, w1, w2, w3};
+  if (order == 4) return fourth;
+  if (order == 6) return sixth;
+  return second;
 }
 
 }  // namespace
@@ -29,6 +45,9 @@ Rattle::Rattle(const CompiledNaturalSystem& system, std::vector<double> paramete
       data_(system.make_data()) {
   if (!(options_.step > 0.0) || !std::isfinite(options_.step)) {
     throw std::invalid_argument("rattle: the step size must be positive and finite");
+  }
+  if (options_.order != 2 && options_.order != 4 && options_.order != 6) {
+    throw std::invalid_argument("rattle: the order must be 2, 4 or 6");
   }
 }
 
@@ -74,15 +93,33 @@ void Rattle::momentum_from_state() {
 
 void Rattle::advance(double t_limit) {
   const auto n = static_cast<Eigen::Index>(system_.coordinate_count());
-  const auto m = static_cast<Eigen::Index>(system_.constraint_count());
   const double t0 = t();
   const double remaining = t_limit - t0;
   const bool last = std::abs(remaining) <= options_.step * (1.0 + 1e-8);
   const double h = last ? remaining : std::copysign(options_.step, remaining);
   const double t1 = last ? t_limit : t0 + h;
   if (!have_momentum_) momentum_from_state();
-  const Eigen::VectorXd q0 = y().head(n), p0 = p_;
+  // the step as the composition's substeps γ_i h, each a RATTLE step from the last
+  Eigen::VectorXd q = y().head(n), p = p_;
+  for (const double gamma : composition_weights(options_.order)) substep(gamma * h, t0, q, p);
+  // q̇ = M⁻¹ p with M at the end (factored by the last substep)
+  Eigen::VectorXd y1(2 * n);
+  y1 << q, mass_.solve(p);
+  if (!y1.allFinite()) {
+    throw IntegrationError(describe("the state became non-finite at t = " + detail::to_text(t1)),
+                           t1);
+  }
+  y_previous_ = y();
+  accept_step(t1, y1);
+  y_end_ = y();
+  p_ = p;
+  have_momentum_ = true;
+}
 
+void Rattle::substep(double h, double t0, Eigen::VectorXd& q, Eigen::VectorXd& p) {
+  const auto n = static_cast<Eigen::Index>(system_.coordinate_count());
+  const auto m = static_cast<Eigen::Index>(system_.constraint_count());
+  const Eigen::VectorXd q0 = q, p0 = p;
   // At q0: M0⁻¹ (as its factor) and G0.
   Eigen::VectorXd psi;
   Eigen::MatrixXd G0, G1;
@@ -135,7 +172,7 @@ void Rattle::advance(double t_limit) {
 
   // Second half, explicit: p* = p½ + h/2 ∂L/∂q(q1, M1⁻¹ p½), p1 = p* − h/2 G1ᵀ μ with G1 M1⁻¹ p1 =
   // 0.
-  factor_mass(q1, mass_, t1);
+  factor_mass(q1, mass_, t0);
   Eigen::VectorXd p1 = p_half + 0.5 * h * gradient_at(q1, mass_, p_half);
   if (m > 0) {
     system_.constraints(q1, parameters_, psi, G1, data_);
@@ -144,17 +181,8 @@ void Rattle::advance(double t_limit) {
         (0.5 * h * G1 * M1_inv_G1t).partialPivLu().solve(G1 * mass_.solve(p1));
     p1 -= 0.5 * h * G1.transpose() * mu;
   }
-  Eigen::VectorXd y1(2 * n);
-  y1 << q1, mass_.solve(p1);
-  if (!y1.allFinite()) {
-    throw IntegrationError(describe("the state became non-finite at t = " + detail::to_text(t1)),
-                           t1);
-  }
-  y_previous_ = y();
-  accept_step(t1, y1);
-  y_end_ = y();
-  p_ = p1;
-  have_momentum_ = true;
+  q = q1;
+  p = p1;
 }
 
 void Rattle::interpolate(double t, Eigen::VectorXd& y_out) const {

@@ -203,8 +203,8 @@ std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunct
     o.projection = std::move(projection);
     return std::make_unique<CvodeBdf>(std::move(rhs), o);
   }
-  throw std::invalid_argument("unknown method '" + options.method +
-                              "' (expected dopri5, rk4, cvode or rattle)");
+  throw std::invalid_argument("unknown method '" + options.method + "' (expected " +
+                              integration_methods + ")");
 }
 
 }  // namespace
@@ -265,8 +265,8 @@ SimulationOptions simulation_options(const SimulationSettings& settings,
   if ((o.t_end / o.output_step) > 1e8) {
     throw std::invalid_argument("--t-end / --output-step asks for more than 10^8 rows");
   }
-  if (o.method != "dopri5" && o.method != "rk4" && o.method != "cvode" && o.method != "rattle") {
-    throw std::invalid_argument("--method must be dopri5, rk4, cvode or rattle");
+  if (!is_integration_method(o.method)) {
+    throw std::invalid_argument(std::string("--method must be ") + integration_methods);
   }
   return o;
 }
@@ -494,13 +494,14 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     };
     const bool inside = options.method == "cvode";
     // RATTLE keeps the constraints itself (a projection would spoil its symplecticity)
-    const bool symplectic = options.method == "rattle";
+    const bool symplectic = options.method.starts_with("rattle");
     std::optional<CompiledNaturalSystem> natural;
     std::unique_ptr<Stepper> stepper;
     if (symplectic) {
       natural.emplace(system, kane_equations(system));
       RattleOptions o;
       o.step = fixed_step(options);
+      o.order = options.method == "rattle6" ? 6 : options.method == "rattle4" ? 4 : 2;
       stepper = std::make_unique<Rattle>(*natural, start.parameters, o);
     } else {
       stepper = make_stepper(options, rhs, project && inside ? projection : nullptr);

@@ -170,8 +170,9 @@ void ModelReader::read_simulate(const YAML::Node& node, System& system) {
   if (node["step"]) s.step = number(node["step"], "step");
   if (!(s.t_end > 0)) fail(node["t_end"], "t_end must be positive");
   if (!(s.output_step > 0)) fail(node["output_step"], "output_step must be positive");
-  if (s.method != "dopri5" && s.method != "rk4" && s.method != "cvode" && s.method != "rattle")
-    fail(node["method"], "method must be dopri5, rk4, cvode or rattle");
+  if (!is_integration_method(s.method)) {
+    fail(node["method"], std::string("method must be ") + integration_methods);
+  }
   // (the integrators would refuse these only once the run has started)
   if (!(s.rtol > 0)) fail(node["rtol"], "rtol must be positive");
   if (!(s.atol > 0)) fail(node["atol"], "atol must be positive");

@@ -16,6 +16,13 @@ std::optional<std::size_t> find_by_name(const std::vector<T>& items, const std::
 
 }  // namespace
 
+bool is_integration_method(std::string_view name) {
+  for (const std::string_view known : {"dopri5", "rk4", "cvode", "rattle", "rattle4", "rattle6"}) {
+    if (name == known) return true;
+  }
+  return false;
+}
+
 std::optional<std::size_t> System::find_parameter(const std::string& wanted) const {
   return find_by_name(parameters, wanted);
 }

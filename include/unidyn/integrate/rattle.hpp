@@ -12,6 +12,11 @@
 // line is explicit in p1 after a linear solve for μ. Second order, symmetric and symplectic; the
 // constraints g = 0 and G q̇ = 0 hold to round-off at every step, and the energy error stays
 // bounded (no drift) over long runs.
+//
+// Higher orders by composition (Yoshida 1990; HLW §II.4, §V.3): a step h made of RATTLE substeps
+// γ_1 h, …, γ_s h with symmetric weights Σ γ_i = 1 is again symmetric, symplectic and
+// constraint-preserving, of order 4 with the triple jump (s = 3) and of order 6 with Yoshida's
+// solution A (s = 7; one weight is negative, a substep backwards).
 #pragma once
 
 #include <Eigen/Dense>
@@ -27,6 +32,8 @@ namespace unidyn {
 struct RattleOptions {
   // The step size h (the last step toward a limit is shortened to land on it).
   double step = 1e-3;
+  // 2 (RATTLE itself), 4 or 6 (composed; 3 or 7 RATTLE substeps a step).
+  int order = 2;
   // The implicit equations are solved until a correction is below this (relative to 1 + |x|),
   // or stops decreasing (round-off reached).
   double tolerance = 1e-15;
@@ -34,18 +41,22 @@ struct RattleOptions {
 };
 
 // State y = (q, q̇). Dense output: the cubic Hermite interpolant of q with q̇ at both ends, q̇
-// linear (both within the method's second order). rhs_evaluations counts evaluations of M and
-// of ∂L/∂q.
+// linear (within the second order's error; between the steps of the higher orders, third order in
+// q and second in q̇ — the values at the steps keep the method's order). rhs_evaluations counts
+// evaluations of M and of ∂L/∂q.
 class Rattle final : public Stepper {
  public:
-  // Throws std::invalid_argument for a step that is not positive and finite.
+  // Throws std::invalid_argument for a step that is not positive and finite or an order other than
+  // 2, 4 and 6.
   Rattle(const CompiledNaturalSystem& system, std::vector<double> parameters,
          RattleOptions options = {});
 
   const RattleOptions& options() const { return options_; }
   // The most fixed-point iterations one step needed so far.
   int most_iterations() const { return most_iterations_; }
-  std::string_view name() const override { return "rattle"; }
+  std::string_view name() const override {
+    return options_.order == 6 ? "rattle6" : options_.order == 4 ? "rattle4" : "rattle";
+  }
 
  private:
   void restart() override;
@@ -53,6 +64,8 @@ class Rattle final : public Stepper {
   void advance(double t_limit) override;
   void interpolate(double t, Eigen::VectorXd& y_out) const override;
 
+  // One RATTLE step of size h from (q, p), in place; leaves M(q1)'s factor in mass_.
+  void substep(double h, double t0, Eigen::VectorXd& q, Eigen::VectorXd& p);
   // p = M(q) q̇ at the current state.
   void momentum_from_state();
   // The Cholesky factor of M(q) into `factor` (IntegrationError when M is not positive definite).

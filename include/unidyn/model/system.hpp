@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "unidyn/symbolic/coordinates.hpp"
@@ -155,6 +156,11 @@ struct Output {
   Expr expression;
   SourcePosition where;
 };
+
+// The integration methods a run may name: dopri5, rk4, cvode, rattle (second order), rattle4 and
+// rattle6 (RATTLE composed to fourth and sixth order); the list as text for messages.
+bool is_integration_method(std::string_view name);
+inline constexpr const char* integration_methods = "dopri5, rk4, cvode, rattle, rattle4 or rattle6";
 
 struct SimulationSettings {
   double t_end = 10.0;
