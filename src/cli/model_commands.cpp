@@ -316,7 +316,7 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
       s.ok                    ? (s.stopped ? "simulated until stop_when" : "simulated")
       : interrupt.requested() ? "INTERRUPTED"
                               : "FAILED",
-      options.t_end, options.method, s.rows,
+      options.t_end, options.method, csv->rows_written(),
       s.event_rows > 0 ? fmt::format(" ({} at events between output times)", s.event_rows) : "",
       path == "-" ? "" : " written to " + printable(path));
   if (interrupt.requested()) {

@@ -3,6 +3,7 @@
 #include "unidyn/io/csv.hpp"
 
 #include <fcntl.h>
+#include <fmt/compile.h>
 #include <fmt/format.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -33,49 +34,101 @@ CsvWriter::CsvWriter(const std::string& path)
 }
 
 CsvWriter::~CsvWriter() {
+  if (fd_ < 0) return;
+  // an error here is lost (close() reports it)
+  try {
+    flush();
+  } catch (const CsvWriteError&) {
+  }
   if (owned_ && fd_ >= 0) ::close(fd_);
 }
 
-void CsvWriter::write_line(const std::string& line) {
-  if (fd_ < 0) throw CsvWriteError("cannot write '" + path_ + "': it is closed");
-  for (std::size_t done = 0; done < line.size();) {
-    const ssize_t n = ::write(fd_, line.data() + done, line.size() - done);
+bool CsvWriter::write_bytes(std::size_t from, std::size_t to) {
+  while (from < to) {
+    const ssize_t n = ::write(fd_, block_.data() + from, to - from);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
-      const std::string why = n < 0 ? std::strerror(errno) : "nothing written";
-      // a part of the line may be in the file: it ends again after the last complete line
-      std::string kept;
-      if (regular_ && ::ftruncate(fd_, complete_) == 0) {
-        ::lseek(fd_, complete_, SEEK_SET);
-        kept = " (the file ends with the last complete row)";
-      }
-      throw CsvWriteError("cannot write '" + path_ + "': " + why + kept);
+      if (n == 0) errno = ENOSPC;
+      return false;
     }
-    done += static_cast<std::size_t>(n);
+    from += static_cast<std::size_t>(n);
   }
-  complete_ += static_cast<long long>(line.size());
+  return true;
+}
+
+void CsvWriter::flush() {
+  if (fd_ < 0) throw CsvWriteError("cannot write '" + path_ + "': it is closed");
+  written_ = std::chrono::steady_clock::now();
+  const std::size_t lines = line_ends_.size();
+  const std::size_t rows = header_pending_ ? lines - 1 : lines;
+  if (write_bytes(0, block_.size())) {
+    complete_ += static_cast<long long>(block_.size());
+    rows_written_ += rows;
+    block_.clear();
+    line_ends_.clear();
+    header_pending_ = false;
+    return;
+  }
+  std::string why = std::strerror(errno);
+  // a part of the block may be in the file: it ends again after the last complete line, and
+  // the block's lines go again one by one, as far as they fit (a pipe cannot be cut back)
+  std::string kept;
+  if (regular_ && ::ftruncate(fd_, complete_) == 0 && ::lseek(fd_, complete_, SEEK_SET) >= 0) {
+    std::size_t start = 0;
+    for (std::size_t k = 0; k < lines; ++k) {
+      if (!write_bytes(start, line_ends_[k])) {
+        why = std::strerror(errno);
+        if (::ftruncate(fd_, complete_) == 0) ::lseek(fd_, complete_, SEEK_SET);
+        break;
+      }
+      complete_ += static_cast<long long>(line_ends_[k] - start);
+      if (k > 0 || !header_pending_) ++rows_written_;
+      start = line_ends_[k];
+    }
+    kept = " (the file ends with the last complete row)";
+  }
+  block_.clear();
+  line_ends_.clear();
+  header_pending_ = false;
+  throw CsvWriteError("cannot write '" + path_ + "': " + why + kept);
+}
+
+void CsvWriter::maybe_flush() {
+  constexpr std::size_t block_bytes = 64 * 1024;
+  constexpr std::chrono::milliseconds patience(200);
+  if (block_.size() >= block_bytes || std::chrono::steady_clock::now() - written_ >= patience) {
+    flush();
+  }
 }
 
 void CsvWriter::header(const std::vector<std::string>& columns) {
-  std::string line;
   for (std::size_t i = 0; i < columns.size(); ++i) {
-    if (i > 0) line += ',';
-    line += csv_field(columns[i]);
+    if (i > 0) block_ += ',';
+    block_ += csv_field(columns[i]);
   }
-  write_line(line + "\n");
+  block_ += '\n';
+  line_ends_.push_back(block_.size());
+  header_pending_ = true;
+  flush();
 }
 
 void CsvWriter::row(const std::vector<double>& values) {
-  std::string line;
+  if (fd_ < 0) throw CsvWriteError("cannot write '" + path_ + "': it is closed");
   for (std::size_t i = 0; i < values.size(); ++i) {
-    if (i > 0) line += ',';
-    fmt::format_to(std::back_inserter(line), "{}", values[i]);
+    if (i > 0) block_ += ',';
+    // the shortest text that reads back to the same double
+    char text[32];  // at most 24 characters
+    block_.append(text, fmt::format_to(text, FMT_COMPILE("{}"), values[i]));
   }
-  write_line(line + "\n");
+  block_ += '\n';
+  line_ends_.push_back(block_.size());
+  maybe_flush();
 }
 
 void CsvWriter::close() {
-  if (!owned_ || fd_ < 0) return;
+  if (fd_ < 0) return;
+  flush();
+  if (!owned_) return;
   const int fd = fd_;
   fd_ = -1;
   if (::close(fd) != 0) {
