@@ -261,7 +261,8 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
   const SimulationStart& start = initial.start;
   const SimulationOptions options = options_for(system, c);
   const auto clock_start = std::chrono::steady_clock::now();
-  const CompiledSystem compiled = command_compiled(c, model, system);
+  // the first rows come at once: a model not compiled yet starts on the tape
+  const CompiledSystem compiled = command_compiled(c, model, system, true);
   const double derive_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   // the values given stay; the others come from the constraints (or, with --project, every value

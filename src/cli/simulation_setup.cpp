@@ -54,9 +54,10 @@ std::vector<std::string> complete_command_start(CommandStart& s, const System& f
 }
 
 CompiledSystem command_compiled(const ModelCommands& c, const CommandModel& model,
-                                const System& system) {
+                                const System& system, bool background) {
   CompileOptions compile_options;
   compile_options.native = c.evaluation == "native";
+  compile_options.background = background;
   // the cache of native code is keyed by what determines the code in the bytes that were parsed
   // (not their comments, initial: or simulate:), and how they were reduced
   compile_options.native_options.key =

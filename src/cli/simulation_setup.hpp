@@ -34,9 +34,9 @@ std::vector<std::string> complete_command_start(CommandStart& s, const System& f
                                                 const CompiledSystem& compiled);
 
 // The system compiled for a run: native code unless --evaluation tape, cached under the bytes that
-// determine it.
+// determine it; with `background`, compiled while the run starts on the tape when not cached.
 CompiledSystem command_compiled(const ModelCommands& c, const CommandModel& model,
-                                const System& system);
+                                const System& system, bool background = false);
 
 // The model's simulate: settings with the command line's overrides.
 SimulationOptions options_for(const System& system, const ModelCommands& c);

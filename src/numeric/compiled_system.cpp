@@ -2,7 +2,9 @@
 #include "unidyn/numeric/compiled_system.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
+#include <thread>
 
 #include "unidyn/equations/friction.hpp"
 #include "unidyn/numeric/cholesky.hpp"
@@ -64,7 +66,51 @@ Tape compile_friction(const System& system, const std::vector<FrictionContact>& 
   return Tape::compile(outputs, tape_inputs(system, false));
 }
 
+// The four tapes as one library of functions unidyn_dynamics, _constraints, _observer, _friction.
+std::shared_ptr<const NativeLibrary> build_native(const std::array<const Tape*, 4>& tapes,
+                                                  const NativeOptions& options) {
+  return NativeLibrary::build({{"unidyn_dynamics", tapes[0]},
+                               {"unidyn_constraints", tapes[1]},
+                               {"unidyn_observer", tapes[2]},
+                               {"unidyn_friction", tapes[3]}},
+                              options);
+}
+
+std::array<NativeFunction, 4> native_functions(const NativeLibrary& library) {
+  return {library.function("unidyn_dynamics"), library.function("unidyn_constraints"),
+          library.function("unidyn_observer"), library.function("unidyn_friction")};
+}
+
+// "native code (cached: PATH)", "native code (compiled in 0.41 s[how]: PATH)", and the notes.
+std::string native_evaluation(const NativeLibrary& library, const std::string& how) {
+  const std::string compiled =
+      "compiled in " + std::to_string(library.compile_seconds()) + " s" + how;
+  std::string text = "native code (" +
+                     (library.cached() ? "cached: " + library.path()
+                      : library.kept() ? compiled + ": " + library.path()
+                                       : compiled) +
+                     ")";
+  if (!library.notes().empty()) text += "; " + library.notes();
+  return text;
+}
+
 }  // namespace
+
+// Native code compiled in a thread of its own, from copies of the tapes; `state` is published
+// after the library, its functions and the evaluation text are in place.
+struct BackgroundCompilation {
+  enum State { compiling, ready, failed };
+  std::array<Tape, 4> tapes;
+  std::shared_ptr<const NativeLibrary> library;
+  std::array<NativeFunction, 4> functions{};
+  std::string evaluation;
+  std::atomic<int> state{compiling};
+  std::thread thread;
+  // the compilation is waited for: it fills the cache for the next run
+  ~BackgroundCompilation() {
+    if (thread.joinable()) thread.join();
+  }
+};
 
 CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& equations,
                                const CompileOptions& options)
@@ -87,26 +133,42 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
   }
   if (!options.native) return;
   // the four tapes as one library; the tape stays when it cannot be had
+  NativeOptions native_options = options.native_options;
+  native_options.only_cached = options.background;
   try {
-    native_ = NativeLibrary::build({{"unidyn_dynamics", &dynamics_},
-                                    {"unidyn_constraints", &constraints_},
-                                    {"unidyn_observer", &observer_},
-                                    {"unidyn_friction", &friction_}},
-                                   options.native_options);
-    native_functions_ = {
-        native_->function("unidyn_dynamics"), native_->function("unidyn_constraints"),
-        native_->function("unidyn_observer"), native_->function("unidyn_friction")};
-    const std::string compiled = "compiled in " + std::to_string(native_->compile_seconds()) + " s";
-    evaluation_ = "native code (" +
-                  (native_->cached() ? "cached: " + native_->path()
-                   : native_->kept() ? compiled + ": " + native_->path()
-                                     : compiled) +
-                  ")";
-    if (!native_->notes().empty()) evaluation_ += "; " + native_->notes();
+    native_ = build_native({&dynamics_, &constraints_, &observer_, &friction_}, native_options);
+    native_functions_ = native_functions(*native_);
+    evaluation_ = native_evaluation(*native_, "");
+  } catch (const NotCached&) {
+    // not in the cache: compiled in a thread of its own while the tape evaluates
+    background_ = std::make_shared<BackgroundCompilation>();
+    BackgroundCompilation& job = *background_;
+    job.tapes = {dynamics_, constraints_, observer_, friction_};
+    native_options.only_cached = false;
+    job.thread = std::thread([&job, native_options] {
+      try {
+        job.library = build_native({&job.tapes[0], &job.tapes[1], &job.tapes[2], &job.tapes[3]},
+                                   native_options);
+        job.functions = native_functions(*job.library);
+        job.evaluation = native_evaluation(*job.library, " in the background, the tape until then");
+        job.state.store(BackgroundCompilation::ready, std::memory_order_release);
+      } catch (const std::exception& error) {
+        job.evaluation = std::string("tape (") + error.what() + ")";
+        job.state.store(BackgroundCompilation::failed, std::memory_order_release);
+      }
+    });
   } catch (const NativeCodeError& error) {
     native_.reset();
     evaluation_ = std::string("tape (") + error.what() + ")";
   }
+}
+
+std::string CompiledSystem::evaluation() const {
+  if (!background_) return evaluation_;
+  if (background_->state.load(std::memory_order_acquire) == BackgroundCompilation::compiling) {
+    return "tape (the native code was still compiling in the background when asked)";
+  }
+  return background_->evaluation;
 }
 
 std::size_t CompiledSystem::instruction_count() const {
@@ -116,12 +178,18 @@ std::size_t CompiledSystem::instruction_count() const {
 
 void CompiledSystem::run(const Tape& tape, std::span<const double> inputs,
                          std::span<double> outputs, CompiledSystemData& data) const {
-  if (native_) {
+  // the native functions: built at once, or by the background compilation once it is ready
+  const std::array<NativeFunction, 4>* functions = native_ ? &native_functions_ : nullptr;
+  if (background_ &&
+      background_->state.load(std::memory_order_acquire) == BackgroundCompilation::ready) {
+    functions = &background_->functions;
+  }
+  if (functions) {
     const Tape* tapes[] = {&dynamics_, &constraints_, &observer_, &friction_};
     for (std::size_t k = 0; k < 4; ++k) {
       if (tapes[k] != &tape) continue;
       if (inputs.size() != tape.input_count() || outputs.size() != tape.output_count()) break;
-      native_functions_[k](inputs.data(), outputs.data());
+      (*functions)[k](inputs.data(), outputs.data());
       return;
     }
   }

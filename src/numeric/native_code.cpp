@@ -4,10 +4,13 @@
 #include "unidyn/numeric/native_code.hpp"
 
 #include <dlfcn.h>
+#include <spawn.h>
 #include <stdlib.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -147,6 +150,23 @@ void* load_checked(const CacheEntry& entry, const Identity& expected) {
   throw Refused(why);
 }
 
+// `sh -c command`'s exit status (-1 when it could not run). Not std::system: that ignores SIGINT
+// in the whole process while the command runs, and the compiler may run in a thread of its own
+// while a simulation, which Ctrl-C must still stop, goes on.
+int run_shell(const std::string& command) {
+  const char* arguments[] = {"sh", "-c", command.c_str(), nullptr};
+  pid_t child = 0;
+  if (::posix_spawn(&child, "/bin/sh", nullptr, nullptr, const_cast<char* const*>(arguments),
+                    environ) != 0) {
+    return -1;
+  }
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0) {
+    if (errno != EINTR) return -1;
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 // Compiles `source` in the private directory `build`; returns the library's path.
 fs::path compile(const std::string& compiler, const std::string& flags, const std::string& source,
                  const fs::path& build, double& seconds) {
@@ -157,7 +177,7 @@ fs::path compile(const std::string& compiler, const std::string& flags, const st
                               shell_quoted(library.string()) + " " + shell_quoted(cpp.string()) +
                               " > " + shell_quoted(log.string()) + " 2>&1";
   const auto start = std::chrono::steady_clock::now();
-  const int status = std::system(command.c_str());
+  const int status = run_shell(command);
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::error_code error;
   if (status != 0 || !fs::exists(library, error)) {
@@ -230,6 +250,7 @@ std::shared_ptr<const NativeLibrary> NativeLibrary::build(
   try {
     const CacheLocation location(options.cache_directory);
     note(location.note());
+    if (options.only_cached && !location.persistent()) throw NotCached("native code: no cache");
     if (!location.persistent()) {
       // compiled and loaded from a private temporary directory, removed after loading
       library->kept_ = false;
@@ -254,6 +275,7 @@ std::shared_ptr<const NativeLibrary> NativeLibrary::build(
         }
       }
     }
+    if (options.only_cached) throw NotCached("native code: not cached yet");
     // Made by one process at a time: the others wait for it here and then find it cached.
     const EntryLock exclusive(directory, name, true);
     if (exclusive.waited_seconds() > 0.01) {

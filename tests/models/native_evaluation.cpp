@@ -114,5 +114,38 @@ TEST(NativeEvaluationFallback, NoCompilerKeepsTheTape) {
   EXPECT_TRUE(qddot.allFinite());
 }
 
+// Compiled in the background: a run starts on the tape and goes on in native code once it is
+// ready — its rows are the tape's, bit for bit, wherever the switch fell; the compilation is waited
+// for at the end and leaves the library in the cache, where the next one finds it at once.
+TEST(NativeEvaluationBackground, SwitchesWithoutChangingARow) {
+  const System system = load_model(test::model_path("double-pendulum"));
+  const EquationsOfMotion equations = lagrange_equations(system);
+  SimulationOptions options = simulation_options(system.simulate);
+  options.t_end = 20.0;
+  CompileOptions background = native_in("background");
+  background.background = true;
+  std::vector<std::vector<double>> rows_tape, rows_background;
+  const auto run = [&](const CompiledSystem& compiled, std::vector<std::vector<double>>& rows) {
+    return simulate(system, compiled, initial_state(system, {}), options,
+                    [&rows](const std::vector<double>& row) { rows.push_back(row); });
+  };
+  ASSERT_TRUE(run(CompiledSystem(system, equations), rows_tape).ok);
+  std::string first;
+  {
+    const CompiledSystem compiled(system, equations, background);
+    EXPECT_FALSE(compiled.native());  // nothing in the cache: the tape at the start
+    ASSERT_TRUE(run(compiled, rows_background).ok);
+    first = compiled.evaluation();
+  }
+  EXPECT_TRUE(first.find("in the background") != std::string::npos ||
+              first.find("still compiling") != std::string::npos)
+      << first;
+  EXPECT_EQ(rows_background, rows_tape);
+  // the library is now cached: the next one has native code from the start
+  const CompiledSystem next(system, equations, background);
+  EXPECT_TRUE(next.native()) << next.evaluation();
+  EXPECT_EQ(next.evaluation().rfind("native code (cached: ", 0), 0u) << next.evaluation();
+}
+
 }  // namespace
 }  // namespace unidyn

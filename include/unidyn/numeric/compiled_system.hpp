@@ -67,8 +67,15 @@ struct CompiledSystemData {
 struct CompileOptions {
   // Native code (numeric/native_code.hpp) when a compiler is at hand, else the tape.
   bool native = false;
+  // When the native code is not cached: compile it in a thread of its own and evaluate on the
+  // tape until it is ready (the same numbers, bit for bit, so a run does not depend on when the
+  // switch happens); the CompiledSystem's end waits for the compilation, which fills the cache.
+  bool background = false;
   NativeOptions native_options;
 };
+
+// Native code being compiled in the background (compiled_system.cpp).
+struct BackgroundCompilation;
 
 // Tape inputs [t, q, q̇, p] (with_accelerations: [t, q, q̇, q̈, λ, p]).
 std::vector<Expr> tape_inputs(const System& system, bool with_accelerations);
@@ -85,7 +92,7 @@ class CompiledSystem {
   // Whether native code evaluates the equations, and how that came about: "tape", "native code
   // (compiled in 0.41 s: PATH)", "native code (cached: PATH)" or "tape (native code failed: ...)".
   bool native() const { return native_ != nullptr; }
-  const std::string& evaluation() const { return evaluation_; }
+  std::string evaluation() const;
   // The size of the compiled equations: tape instructions, and bytes of native source (0 without).
   std::size_t instruction_count() const;
   std::size_t native_source_bytes() const { return native_ ? native_->source_bytes() : 0; }
@@ -167,6 +174,8 @@ class CompiledSystem {
   // The tapes as native functions (dynamics, constraints, observer, friction), when built.
   std::shared_ptr<const NativeLibrary> native_;
   std::array<NativeFunction, 4> native_functions_{};
+  // The native code compiled in the background (CompileOptions::background), shared by copies.
+  std::shared_ptr<BackgroundCompilation> background_;
   std::string evaluation_ = "tape";
 };
 

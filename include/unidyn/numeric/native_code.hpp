@@ -42,6 +42,8 @@ struct NativeOptions {
   // generated source. A model's text is the better key: the source of one model can differ from
   // run to run in the order GiNaC gives its (equal) expressions.
   std::string key;
+  // Only a library already in the cache: NotCached rather than compiling one.
+  bool only_cached = false;
   // Test hook: the file name of an entry from its key's text (default: its SHA-256). A weak one
   // makes different keys share a file, as a collision of the hash would.
   std::string (*entry_name)(std::string_view key_text) = nullptr;
@@ -52,6 +54,12 @@ struct NativeOptions {
 class NativeCodeError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+// NativeOptions::only_cached and the library is not in the cache.
+class NotCached : public NativeCodeError {
+ public:
+  using NativeCodeError::NativeCodeError;
 };
 
 // A loaded library of compiled tapes. Immutable; its functions stay valid while it lives.
