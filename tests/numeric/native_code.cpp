@@ -83,6 +83,37 @@ TEST(NativeCode, EveryOperationAgreesWithTheTapeBitForBit) {
   EXPECT_GT(compared, 3000u);
 }
 
+// A long tape is compiled in parts over an array of registers (native_source.cpp); values made in
+// one part and used in later ones, sincos among them, still give the tape's results bit for bit.
+TEST(NativeCode, ALongTapeInPartsAgreesWithTheTapeBitForBit) {
+  const GiNaC::realsymbol x("x"), y("y");
+  // 700 terms sin(a_k) cos(a_k) (1 + c_k y), a_k = c_k x + y: the sum's running total and the
+  // terms of the outputs below cross the parts
+  std::vector<GiNaC::ex> outputs;
+  GiNaC::ex sum = 0;
+  for (int k = 0; k < 700; ++k) {
+    const GiNaC::ex c = GiNaC::numeric(k + 1, 1000), a = c * x + y;
+    const GiNaC::ex term = GiNaC::sin(a) * GiNaC::cos(a) * (1 + c * y);
+    sum += term;
+    if (k % 100 == 0) outputs.push_back(term);
+  }
+  outputs.push_back(sum);
+  const Tape tape = Tape::compile(outputs, std::vector<GiNaC::realsymbol>{x, y});
+  ASSERT_GT(tape.instruction_count(), 3000u);
+  ASSERT_NE(tape_source(tape, "f").find("f_part1("), std::string::npos);
+  const auto library = NativeLibrary::build({{"f", &tape}}, in_temporary_cache("parts"));
+  const NativeFunction f = library->function("f");
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> value(-1, 1);
+  std::vector<double> native(tape.output_count());
+  for (int trial = 0; trial < 50; ++trial) {
+    const std::vector<double> in{value(random), value(random)};
+    const std::vector<double> expected = tape.evaluate(in);
+    f(in.data(), native.data());
+    EXPECT_EQ(native, expected) << "trial " << trial;
+  }
+}
+
 // The second build of the same source loads the cached library; another source compiles anew.
 TEST(NativeCode, CachedByTheHashOfItsSource) {
   const NativeOptions options = in_temporary_cache("cache");
