@@ -44,6 +44,18 @@ def run(command, stdin=None, timeout=1800, env=None):
     return result.stdout
 
 
+def fastest(command, runs=3, timeout=300):
+    """The shortest wall time of `runs` runs of a command, and the last run's result (raises on a
+    non-zero exit)."""
+    best, out = None, None
+    for _ in range(runs):
+        start = time.perf_counter()
+        out = subprocess.run(command, capture_output=True, text=True, timeout=timeout, check=True)
+        elapsed = time.perf_counter() - start
+        best = elapsed if best is None else min(best, elapsed)
+    return best, out
+
+
 def run_json(command, stdin=None, timeout=1800):
     """The last line of a command's output, read as JSON."""
     return json.loads(run(command, stdin, timeout).strip().splitlines()[-1])
@@ -227,14 +239,7 @@ class Bench:
         bicycle_at = ["--at", "der(thR)=v/rR", "der(phi)=0", "der(delta)=0", "der(psi)=0"]
 
         def best_of_three(arguments):
-            best, out = None, None
-            for _ in range(3):
-                start = time.perf_counter()
-                out = subprocess.run([cli] + arguments, capture_output=True, text=True,
-                                     timeout=300, check=True)
-                elapsed = time.perf_counter() - start
-                best = elapsed if best is None else min(best, elapsed)
-            return best, out
+            return fastest([cli] + arguments)
 
         seconds, out = best_of_three(disk)
         ours = json.loads(out.stdout)
@@ -454,12 +459,7 @@ print(json.dumps({{"loop": looped, "sweep": time.perf_counter() - start}}))
             command = [cli, "simulate", model, "--t-end", t_end, "--rtol", rtol,
                        "--output-step", "0.01", "-o", os.path.join(scratch, "run.csv")]
             run(command)  # the native code compiled and cached before the timed runs
-            seconds = None
-            for _ in range(3):
-                start = time.perf_counter()
-                run(command)
-                elapsed = time.perf_counter() - start
-                seconds = elapsed if seconds is None else min(seconds, elapsed)
+            seconds, _ = fastest(command)
             with open(os.path.join(scratch, "run.csv")) as f:
                 rows = sum(1 for _ in f) - 1
         return (f"The double pendulum's run as a whole `unidyn simulate` process (model read, "
