@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "unidyn/integrate/dormand_prince.hpp"
+#include "unidyn/integrate/dormand_prince_853.hpp"
 #include "unidyn/integrate/rk4.hpp"
 
 namespace {
@@ -25,12 +26,14 @@ unidyn::OdeFunction linear_system() {
   };
 }
 
+// One accepted step of a Dormand–Prince pair (dopri5 or dop853) at rtol 1e-8, without dense output.
+template <class Pair>
 void BM_DormandPrinceStep(benchmark::State& state) {
   unidyn::DormandPrinceOptions options;
   options.rtol = 1e-8;
   options.atol = 1e-10;
   options.max_steps = std::numeric_limits<std::size_t>::max();
-  unidyn::DormandPrince54 stepper(linear_system(), options);
+  Pair stepper(linear_system(), options);
   stepper.initialize(0.0, Eigen::VectorXd::Ones(12));
   for (auto _ : state) {
     stepper.step(1e12);
@@ -39,7 +42,8 @@ void BM_DormandPrinceStep(benchmark::State& state) {
   state.counters["rhs/step"] =
       double(stepper.stats().rhs_evaluations) / double(stepper.stats().accepted_steps);
 }
-BENCHMARK(BM_DormandPrinceStep);
+BENCHMARK(BM_DormandPrinceStep<unidyn::DormandPrince54>);
+BENCHMARK(BM_DormandPrinceStep<unidyn::DormandPrince853>);
 
 void BM_Rk4Step(benchmark::State& state) {
   unidyn::Rk4 stepper(linear_system(), 0.01);

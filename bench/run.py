@@ -391,10 +391,11 @@ print(json.dumps({{"loop": looped, "sweep": time.perf_counter() - start}}))
             reference = run_json([self.unidyn, "simulate", model, "--t-end", t_end, "--method",
                                   "dopri5", "--rtol", "1e-13"])["final_state"]
             candidates = []
-            for rtol in ("1e-6", "1e-7", "1e-8", "1e-9", "1e-10", "1e-11", "1e-12"):
-                candidates.append(("unidyn", "dopri5", f"rtol {rtol}", [
-                    self.unidyn, "simulate", model, "--t-end", t_end, "--method", "dopri5",
-                    "--rtol", rtol]))
+            for method in ("dopri5", "dop853"):
+                for rtol in ("1e-6", "1e-7", "3e-8", "1e-8", "1e-9", "1e-10", "1e-11", "1e-12"):
+                    candidates.append(("unidyn", method, f"rtol {rtol}", [
+                        self.unidyn, "simulate", model, "--t-end", t_end, "--method", method,
+                        "--rtol", rtol]))
             for method, steps in (("rattle", ("1e-3", "3e-4", "1e-4")),
                                   ("rattle4", ("1e-2", "5e-3", "2e-3", "1e-3")),
                                   ("rattle6", ("2e-2", "1e-2", "5e-3", "2e-3"))):

@@ -421,9 +421,9 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
     command->add_option("model", c.model, "MODEL file or bundled model name")->required();
     command->add_option("--t-end", c.t_end, "end time")->check(kPositive);
     command->add_option("--output-step", c.output_step, "time between rows")->check(kPositive);
-    command->add_option("--method", c.integrator,
-                        "dopri5 | rk4 | cvode | rattle | rattle4 | rattle6");
-    command->add_option("--rtol", c.rtol, "relative tolerance (dopri5)")->check(kPositive);
+    command->add_option("--method", c.integrator, integration_method_choices());
+    command->add_option("--rtol", c.rtol, "relative tolerance (dopri5, dop853, cvode)")
+        ->check(kPositive);
     command->add_option("--set", c.sets, "NAME=VALUE: a parameter, q or der(q)");
     command->add_flag("--reduced", c.reduced, "simulate the approach-II equations");
     command->add_flag("--project", c.project,

@@ -166,7 +166,7 @@ void add_sweep_command(CLI::App& app, SweepCommand& c) {
                      "gives the stability and eigenvalues there with its parameters");
   c.plan->add_option("--t-end", c.t_end, "end time of every run");
   c.plan->add_option("--output-step", c.output_step, "time between rows");
-  c.plan->add_option("--method", c.method, "dopri5 | rk4 | cvode | rattle | rattle4 | rattle6");
+  c.plan->add_option("--method", c.method, integration_method_choices());
   c.plan->add_option("--rtol", c.rtol, "relative tolerance");
   c.plan->add_option("-o,--output", c.output, "the manifest (default MODEL.sweep.yaml)");
 

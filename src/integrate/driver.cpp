@@ -50,7 +50,7 @@ struct Crossing {
   std::size_t which;
   double t;
 };
-std::optional<Crossing> earliest_crossing(const Stepper& stepper, const IntegrationCallbacks& cb,
+std::optional<Crossing> earliest_crossing(Stepper& stepper, const IntegrationCallbacks& cb,
                                           const Eigen::VectorXd& g_before,
                                           const Eigen::VectorXd& g_after) {
   std::optional<Crossing> first;

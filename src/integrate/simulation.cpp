@@ -13,6 +13,7 @@
 #include "unidyn/integrate/contacts.hpp"
 #include "unidyn/integrate/cvode.hpp"
 #include "unidyn/integrate/dormand_prince.hpp"
+#include "unidyn/integrate/dormand_prince_853.hpp"
 #include "unidyn/integrate/driver.hpp"
 #include "unidyn/integrate/friction_phases.hpp"
 #include "unidyn/integrate/initial_state.hpp"
@@ -188,11 +189,12 @@ double fixed_step(const SimulationOptions& options) {
 std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunction rhs,
                                       std::function<void(double, Eigen::VectorXd&)> projection) {
   if (options.method == "rk4") return std::make_unique<Rk4>(std::move(rhs), fixed_step(options));
-  if (options.method == "dopri5") {
+  if (options.method == "dopri5" || options.method == "dop853") {
     DormandPrinceOptions o;
     o.rtol = options.rtol;
     o.atol = options.atol;
     o.max_steps = options.max_steps;
+    if (options.method == "dop853") return std::make_unique<DormandPrince853>(std::move(rhs), o);
     return std::make_unique<DormandPrince54>(std::move(rhs), o);
   }
   if (options.method == "cvode") {
@@ -204,7 +206,7 @@ std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunct
     return std::make_unique<CvodeBdf>(std::move(rhs), o);
   }
   throw std::invalid_argument("unknown method '" + options.method + "' (expected " +
-                              integration_methods + ")");
+                              integration_methods() + ")");
 }
 
 }  // namespace
@@ -266,7 +268,7 @@ SimulationOptions simulation_options(const SimulationSettings& settings,
     throw std::invalid_argument("--t-end / --output-step asks for more than 10^8 rows");
   }
   if (!is_integration_method(o.method)) {
-    throw std::invalid_argument(std::string("--method must be ") + integration_methods);
+    throw std::invalid_argument("--method must be " + integration_methods());
   }
   return o;
 }

@@ -41,13 +41,13 @@ void Stepper::step(double t_limit) {
   advance(t_limit);
 }
 
-Eigen::VectorXd Stepper::dense(double t) const {
+Eigen::VectorXd Stepper::dense(double t) {
   Eigen::VectorXd y_out;
   dense(t, y_out);
   return y_out;
 }
 
-void Stepper::dense(double t, Eigen::VectorXd& y_out) const {
+void Stepper::dense(double t, Eigen::VectorXd& y_out) {
   // The end points exactly; inside, the method's continuous extension.
   if (t == t_) {
     y_out = y_;
@@ -60,6 +60,7 @@ void Stepper::dense(double t, Eigen::VectorXd& y_out) const {
                                      " outside the last step [" + detail::to_text(t_previous_) +
                                      ", " + detail::to_text(t_) + "]"));
   }
+  prepare_dense();
   interpolate(t, y_out);
 }
 

@@ -171,7 +171,7 @@ void ModelReader::read_simulate(const YAML::Node& node, System& system) {
   if (!(s.t_end > 0)) fail(node["t_end"], "t_end must be positive");
   if (!(s.output_step > 0)) fail(node["output_step"], "output_step must be positive");
   if (!is_integration_method(s.method)) {
-    fail(node["method"], std::string("method must be ") + integration_methods);
+    fail(node["method"], "method must be " + integration_methods());
   }
   // (the integrators would refuse these only once the run has started)
   if (!(s.rtol > 0)) fail(node["rtol"], "rtol must be positive");

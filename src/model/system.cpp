@@ -17,10 +17,28 @@ std::optional<std::size_t> find_by_name(const std::vector<T>& items, const std::
 }  // namespace
 
 bool is_integration_method(std::string_view name) {
-  for (const std::string_view known : {"dopri5", "rk4", "cvode", "rattle", "rattle4", "rattle6"}) {
+  for (const std::string_view known : integration_method_names) {
     if (name == known) return true;
   }
   return false;
+}
+
+std::string integration_methods() {
+  std::string text;
+  for (std::size_t i = 0; i < integration_method_names.size(); ++i) {
+    if (i > 0) text += i + 1 == integration_method_names.size() ? " or " : ", ";
+    text += integration_method_names[i];
+  }
+  return text;
+}
+
+std::string integration_method_choices() {
+  std::string text;
+  for (const std::string_view name : integration_method_names) {
+    if (!text.empty()) text += " | ";
+    text += name;
+  }
+  return text;
 }
 
 std::optional<std::size_t> System::find_parameter(const std::string& wanted) const {

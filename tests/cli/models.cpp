@@ -596,5 +596,22 @@ TEST(CliModels, SimulateRk4) {
   EXPECT_NE(a.at(50, "phi"), a.at(0, "phi"));
 }
 
+// --method dop853: the eighth-order pair follows dopri5's motion; both at rtol 1e-10.
+TEST(CliModels, SimulateDop853) {
+  const Outcome dop853 = run("simulate heavy-top --t-end 2 --output-step 0.1 --method dop853");
+  ASSERT_EQ(dop853.status, 0) << dop853.err;
+  EXPECT_TRUE(contains(dop853.err, "(dop853), 21 rows")) << dop853.err;
+  const Outcome dopri5 = run("simulate heavy-top --t-end 2 --output-step 0.1");
+  ASSERT_EQ(dopri5.status, 0) << dopri5.err;
+  const Csv a = parse_csv(dop853.out), b = parse_csv(dopri5.out);
+  ASSERT_EQ(a.rows.size(), 21u);
+  ASSERT_EQ(b.rows.size(), 21u);
+  for (std::size_t row = 1; row < 21; ++row) {
+    for (std::size_t column = 1; column < a.rows[row].size(); ++column) {
+      EXPECT_NEAR(a.rows[row][column], b.rows[row][column], 1e-7) << row << ", " << column;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace unidyn

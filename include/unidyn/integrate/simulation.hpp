@@ -16,7 +16,8 @@ namespace unidyn {
 struct SimulationOptions {
   double t_end = 10.0;
   double output_step = 0.01;
-  // dopri5, rk4, cvode (BDF, for stiff models) or rattle (symplectic, natural conservative models)
+  // one of integration_method_names: dopri5 or dop853 (Dormand–Prince 5(4) or 8(5,3)), rk4, cvode
+  // (BDF, for stiff models) or rattle, rattle4, rattle6 (symplectic, natural conservative models)
   std::string method = "dopri5";
   double rtol = 1e-10;
   double atol = 1e-12;

@@ -32,9 +32,10 @@ class Stepper {
   double t_previous() const { return t_previous_; }
 
   // The solution anywhere in the last step [t_previous(), t()]; at t() exactly it is y(), also
-  // after reset_state(). Throws std::out_of_range outside the last step.
-  Eigen::VectorXd dense(double t) const;
-  void dense(double t, Eigen::VectorXd& y_out) const;
+  // after reset_state(). Throws std::out_of_range outside the last step. A method whose
+  // continuous extension needs extra stages (dop853) evaluates them on the first call in a step.
+  Eigen::VectorXd dense(double t);
+  void dense(double t, Eigen::VectorXd& y_out);
 
   // Continue from a new point (t, y) — after an event changed the state or the equations —
   // as a new solution, keeping the statistics. Same checks as initialize().
@@ -76,6 +77,8 @@ class Stepper {
   virtual void before_reset_state() = 0;
   // One accepted step toward t_limit (t_limit ≠ t(), both finite), ending with accept_step().
   virtual void advance(double t_limit) = 0;
+  // Whatever the continuous extension of the last step still needs, before interpolate().
+  virtual void prepare_dense() {}
   // The solution at t strictly inside the last step, into y_out.
   virtual void interpolate(double t, Eigen::VectorXd& y_out) const = 0;
 

@@ -157,10 +157,14 @@ struct Output {
   SourcePosition where;
 };
 
-// The integration methods a run may name: dopri5, rk4, cvode, rattle (second order), rattle4 and
-// rattle6 (RATTLE composed to fourth and sixth order); the list as text for messages.
+// The integration methods a run may name: dopri5 and dop853 (Dormand–Prince 5(4) and 8(5,3)), rk4,
+// cvode, rattle (second order), rattle4 and rattle6 (RATTLE composed to fourth and sixth order).
+inline constexpr std::array<std::string_view, 7> integration_method_names = {
+    "dopri5", "dop853", "rk4", "cvode", "rattle", "rattle4", "rattle6"};
 bool is_integration_method(std::string_view name);
-inline constexpr const char* integration_methods = "dopri5, rk4, cvode, rattle, rattle4 or rattle6";
+// The names joined for messages ("dopri5, dop853, … or rattle6") and for --help ("dopri5 | …").
+std::string integration_methods();
+std::string integration_method_choices();
 
 struct SimulationSettings {
   double t_end = 10.0;
