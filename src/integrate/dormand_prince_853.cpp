@@ -67,7 +67,7 @@ bool DormandPrince853::attempt(double h, double t_new) {
 
 double DormandPrince853::error_norm(double h) {
   const auto& k = k_;
-  const Eigen::ArrayXd scale = error_scale(y_new_);
+  const Eigen::ArrayXd& scale = error_scale(y_new_);
   // Σ (err5_i / sk_i)² and Σ (err3_i / sk_i)², without the factor h.
   double sum5 = 0.0, sum3 = 0.0;
   for (Eigen::Index i = 0; i < scale.size(); ++i) {

@@ -54,8 +54,9 @@ void EmbeddedRungeKutta::exchange_first_stage(Eigen::VectorXd& f_new) {
   have_f0_ = true;
 }
 
-Eigen::ArrayXd EmbeddedRungeKutta::error_scale(const Eigen::VectorXd& y_new) const {
-  return options_.atol + options_.rtol * y().array().abs().max(y_new.array().abs());
+const Eigen::ArrayXd& EmbeddedRungeKutta::error_scale(const Eigen::VectorXd& y_new) {
+  scale_ = options_.atol + options_.rtol * y().array().abs().max(y_new.array().abs());
+  return scale_;
 }
 
 void EmbeddedRungeKutta::restart() {

@@ -8,8 +8,7 @@
 
 namespace unidyn {
 
-void CompiledSystem::evaluate_friction(double t, const Eigen::VectorXd& q,
-                                       const Eigen::VectorXd& qdot,
+void CompiledSystem::evaluate_friction(double t, StateRef q, StateRef qdot,
                                        std::span<const double> parameters,
                                        CompiledSystemData& data) const {
   const double* out = evaluate_at(friction_, t, q, qdot, parameters, data);

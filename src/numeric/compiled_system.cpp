@@ -218,7 +218,7 @@ CompiledSystemData CompiledSystem::make_data() const {
   return data;
 }
 
-void CompiledSystem::load_state(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+void CompiledSystem::load_state(double t, StateRef q, StateRef qdot,
                                 std::span<const double> parameters,
                                 CompiledSystemData& data) const {
   if (parameters.size() != p_) throw std::invalid_argument("wrong number of parameter values");
@@ -230,8 +230,7 @@ void CompiledSystem::load_state(double t, const Eigen::VectorXd& q, const Eigen:
   for (std::size_t k = 0; k < p_; ++k) data.inputs[1 + 2 * n_ + k] = parameters[k];
 }
 
-const double* CompiledSystem::evaluate_at(const Tape& tape, double t, const Eigen::VectorXd& q,
-                                          const Eigen::VectorXd& qdot,
+const double* CompiledSystem::evaluate_at(const Tape& tape, double t, StateRef q, StateRef qdot,
                                           std::span<const double> parameters,
                                           CompiledSystemData& data) const {
   load_state(t, q, qdot, parameters, data);
@@ -240,9 +239,9 @@ const double* CompiledSystem::evaluate_at(const Tape& tape, double t, const Eige
   return data.outputs.data();
 }
 
-void CompiledSystem::solve(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
-                           std::span<const double> parameters, Eigen::VectorXd& qddot,
-                           Eigen::VectorXd& lambda, CompiledSystemData& data) const {
+void CompiledSystem::solve(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
+                           Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
+                           CompiledSystemData& data) const {
   const double* out = evaluate_at(dynamics_, t, q, qdot, parameters, data);
   const auto N = static_cast<Eigen::Index>(n_);
   const auto Mc = static_cast<Eigen::Index>(m_);
@@ -353,7 +352,7 @@ void CompiledSystem::solve_saddle_point(double t, const Eigen::MatrixXd& A,
   lambda = x.tail(Mc);
 }
 
-void CompiledSystem::constraints(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
+void CompiledSystem::constraints(double t, StateRef q, StateRef qdot,
                                  std::span<const double> parameters,
                                  CompiledSystemData& data) const {
   const double* out = evaluate_at(constraints_, t, q, qdot, parameters, data);
@@ -366,15 +365,14 @@ void CompiledSystem::constraints(double t, const Eigen::VectorXd& q, const Eigen
   data.constraint_position = Eigen::Map<const Eigen::VectorXd>(out + m_ * n_ + m_, Mc);
 }
 
-void CompiledSystem::observe(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
-                             const Eigen::VectorXd& qddot, const Eigen::VectorXd& lambda,
+void CompiledSystem::observe(double t, StateRef q, StateRef qdot, StateRef qddot, StateRef lambda,
                              std::span<const double> parameters, std::span<double> values,
                              CompiledSystemData& data) const {
   // Inputs [t, q, q̇, q̈, λ, p]
   std::vector<double>& in = data.inputs;
   in[0] = t;
   std::size_t k = 1;
-  for (const Eigen::VectorXd* v : {&q, &qdot, &qddot}) {
+  for (const StateRef* v : {&q, &qdot, &qddot}) {
     for (Eigen::Index i = 0; i < v->size(); ++i) in[k++] = (*v)[i];
   }
   for (Eigen::Index i = 0; i < lambda.size(); ++i) in[k++] = lambda[i];

@@ -54,8 +54,8 @@ class EmbeddedRungeKutta : public Stepper {
   // In commit(): the derivative at the new point becomes the next first stage; `f_new` receives
   // the step's own first stage in exchange.
   void exchange_first_stage(Eigen::VectorXd& f_new);
-  // The weights of the error test: atol + rtol max(|y_i|, |y_new_i|).
-  Eigen::ArrayXd error_scale(const Eigen::VectorXd& y_new) const;
+  // The weights of the error test: atol + rtol max(|y_i|, |y_new_i|) (kept until the next call).
+  const Eigen::ArrayXd& error_scale(const Eigen::VectorXd& y_new);
   // Where the last failed attempt found a non-finite stage or state.
   double t_bad_ = 0.0;
 
@@ -86,6 +86,7 @@ class EmbeddedRungeKutta : public Stepper {
   double error_previous_ = 1e-4;
   // f(t, y) at the current point when have_f0_ (first same as last); scratch of the first step.
   Eigen::VectorXd f0_, probe_, f_probe_;
+  Eigen::ArrayXd scale_;
   bool have_f0_ = false;
 };
 

@@ -41,6 +41,10 @@ struct FrictionValues {
 };
 
 // The mutable side: registers and matrices one evaluation needs (one per thread).
+// A vector argument of the evaluations: a VectorXd or a contiguous segment of one (y.head(n)),
+// taken without a copy.
+using StateRef = Eigen::Ref<const Eigen::VectorXd>;
+
 struct CompiledSystemData {
   TapeWorkspace workspace;
   std::vector<double> inputs;
@@ -115,24 +119,22 @@ class CompiledSystem {
   const Tape& constraint_tape() const { return constraints_; }
 
   // The rough contacts' numbers at (t, q, q̇) into data.friction.
-  void evaluate_friction(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
-                         std::span<const double> parameters, CompiledSystemData& data) const;
+  void evaluate_friction(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
+                         CompiledSystemData& data) const;
 
   CompiledSystemData make_data() const;
 
   // q̈ and λ at (t, q, q̇). Throws std::runtime_error when M is not positive definite or the
   // constraints are dependent (A M⁻¹ Aᵀ singular).
-  void solve(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
-             std::span<const double> parameters, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
-             CompiledSystemData& data) const;
+  void solve(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
+             Eigen::VectorXd& qddot, Eigen::VectorXd& lambda, CompiledSystemData& data) const;
 
   // Fills data.constraint_matrix, constraint_velocity_term and constraint_position at (t, q, q̇).
-  void constraints(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
-                   std::span<const double> parameters, CompiledSystemData& data) const;
+  void constraints(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
+                   CompiledSystemData& data) const;
 
   // Energies, outputs and conserved quantities at a solved state.
-  void observe(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
-               const Eigen::VectorXd& qddot, const Eigen::VectorXd& lambda,
+  void observe(double t, StateRef q, StateRef qdot, StateRef qddot, StateRef lambda,
                std::span<const double> parameters, std::span<double> values,
                CompiledSystemData& data) const;
 
@@ -149,12 +151,11 @@ class CompiledSystem {
   // The solve with rough contacts: stick rows in place of their normal rows, friction columns.
   void solve_with_friction(double t, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
                            CompiledSystemData& data) const;
-  void load_state(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
-                  std::span<const double> parameters, CompiledSystemData& data) const;
+  void load_state(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
+                  CompiledSystemData& data) const;
   // Evaluates a tape of inputs [t, q, q̇, p] at the state; returns its outputs (in data).
-  const double* evaluate_at(const Tape& tape, double t, const Eigen::VectorXd& q,
-                            const Eigen::VectorXd& qdot, std::span<const double> parameters,
-                            CompiledSystemData& data) const;
+  const double* evaluate_at(const Tape& tape, double t, StateRef q, StateRef qdot,
+                            std::span<const double> parameters, CompiledSystemData& data) const;
 
   // outputs = tape(inputs), by its native function when there is one.
   void run(const Tape& tape, std::span<const double> inputs, std::span<double> outputs,
