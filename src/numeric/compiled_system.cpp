@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <atomic>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 #include "unidyn/equations/friction.hpp"
 #include "unidyn/numeric/cholesky.hpp"
+#include "unidyn/numeric/evaluation_form.hpp"
 
 namespace unidyn {
 
@@ -24,7 +26,8 @@ std::vector<Expr> tape_inputs(const System& system, bool with_accelerations) {
   return inputs;
 }
 
-Tape dynamics_tape(const System& system, const EquationsOfMotion& eq) {
+Tape dynamics_tape(const System& system, const EquationsOfMotion& derived) {
+  const EquationsOfMotion eq = evaluation_form(derived);
   std::vector<Expr> outputs = eq.mass_matrix.data;
   outputs.insert(outputs.end(), eq.forcing.begin(), eq.forcing.end());
   outputs.insert(outputs.end(), eq.constraint_matrix.data.begin(), eq.constraint_matrix.data.end());
@@ -34,7 +37,8 @@ Tape dynamics_tape(const System& system, const EquationsOfMotion& eq) {
 
 namespace {
 
-Tape compile_constraints(const System& system, const EquationsOfMotion& eq) {
+Tape compile_constraints(const System& system, const EquationsOfMotion& derived) {
+  const EquationsOfMotion eq = evaluation_form(derived);
   std::vector<Expr> outputs = eq.constraint_matrix.data;
   outputs.insert(outputs.end(), eq.constraint_velocity_term.begin(),
                  eq.constraint_velocity_term.end());
@@ -135,16 +139,31 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
   // the four tapes as one library; the tape stays when it cannot be had
   NativeOptions native_options = options.native_options;
   native_options.only_cached = options.background;
-  try {
+  const auto build_now = [&] {
     native_ = build_native({&dynamics_, &constraints_, &observer_, &friction_}, native_options);
     native_functions_ = native_functions(*native_);
     evaluation_ = native_evaluation(*native_, "");
-  } catch (const NotCached&) {
-    // not in the cache: compiled in a thread of its own while the tape evaluates
-    background_ = std::make_shared<BackgroundCompilation>();
-    BackgroundCompilation& job = *background_;
-    job.tapes = {dynamics_, constraints_, observer_, friction_};
-    native_options.only_cached = false;
+  };
+  try {
+    try {
+      build_now();
+    } catch (const NotCached&) {
+      // not in the cache: compiled in a thread of its own while the tape evaluates, or here when
+      // no thread can be had
+      native_options.only_cached = false;
+      if (!compile_in_background(native_options)) build_now();
+    }
+  } catch (const NativeCodeError& error) {
+    native_.reset();
+    evaluation_ = std::string("tape (") + error.what() + ")";
+  }
+}
+
+bool CompiledSystem::compile_in_background(const NativeOptions& native_options) {
+  background_ = std::make_shared<BackgroundCompilation>();
+  BackgroundCompilation& job = *background_;
+  job.tapes = {dynamics_, constraints_, observer_, friction_};
+  try {
     job.thread = std::thread([&job, native_options] {
       try {
         job.library = build_native({&job.tapes[0], &job.tapes[1], &job.tapes[2], &job.tapes[3]},
@@ -157,10 +176,12 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
         job.state.store(BackgroundCompilation::failed, std::memory_order_release);
       }
     });
-  } catch (const NativeCodeError& error) {
-    native_.reset();
-    evaluation_ = std::string("tape (") + error.what() + ")";
+  } catch (const std::system_error&) {
+    // a process or thread limit reached
+    background_.reset();
+    return false;
   }
+  return true;
 }
 
 std::string CompiledSystem::evaluation() const {

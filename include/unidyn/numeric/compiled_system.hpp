@@ -85,7 +85,8 @@ struct BackgroundCompilation;
 std::vector<Expr> tape_inputs(const System& system, bool with_accelerations);
 
 // The dynamics as a tape of inputs [t, q, q̇, p] (tape_inputs) and outputs M (row by row), f, A
-// (row by row) and b of M q̈ = f + Aᵀ λ, A q̈ + b = 0.
+// (row by row) and b of M q̈ = f + Aᵀ λ, A q̈ + b = 0, in their evaluation form
+// (numeric/evaluation_form.hpp).
 Tape dynamics_tape(const System& system, const EquationsOfMotion& eq);
 
 class CompiledSystem {
@@ -151,6 +152,9 @@ class CompiledSystem {
   // The solve with rough contacts: stick rows in place of their normal rows, friction columns.
   void solve_with_friction(double t, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
                            CompiledSystemData& data) const;
+  // Starts the native compilation in a thread of its own (background_); false when no thread
+  // could be created.
+  bool compile_in_background(const NativeOptions& native_options);
   void load_state(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
                   CompiledSystemData& data) const;
   // Evaluates a tape of inputs [t, q, q̇, p] at the state; returns its outputs (in data).
