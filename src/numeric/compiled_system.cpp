@@ -8,8 +8,8 @@
 #include <thread>
 
 #include "unidyn/equations/friction.hpp"
-#include "unidyn/numeric/cholesky.hpp"
 #include "unidyn/numeric/evaluation_form.hpp"
+#include "unidyn/numeric/ldlt.hpp"
 
 namespace unidyn {
 
@@ -308,9 +308,9 @@ void CompiledSystem::solve_with(double t, const Eigen::MatrixXd& A, const Eigen:
     solve_saddle_point(t, A, b, C ? *C : Eigen::MatrixXd(A.transpose()), qddot, lambda, data);
     return;
   }
-  // M = L Lᵀ: the mass matrix of a well-posed model is positive definite
+  // M = L D Lᵀ: the mass matrix of a well-posed model is positive definite
   double* factor = data.mass_factor.data();
-  if (!cholesky_factor(factor, n_)) {
+  if (!ldlt_factor(factor, n_)) {
     // M is only semi-definite when coordinates are redundant (the four Euler parameters of a
     // body); the constraints then make the saddle-point system regular.
     solve_saddle_point(t, A, b, C ? *C : Eigen::MatrixXd(A.transpose()), qddot, lambda, data);
@@ -318,10 +318,10 @@ void CompiledSystem::solve_with(double t, const Eigen::MatrixXd& A, const Eigen:
   }
   // M⁻¹ X, column by column
   const auto solve_columns = [&](Eigen::MatrixXd& X) {
-    for (Eigen::Index j = 0; j < X.cols(); ++j) cholesky_solve(factor, n_, X.col(j).data());
+    for (Eigen::Index j = 0; j < X.cols(); ++j) ldlt_solve(factor, n_, X.col(j).data());
   };
   qddot = data.forcing;
-  cholesky_solve(factor, n_, qddot.data());
+  ldlt_solve(factor, n_, qddot.data());
   lambda.resize(A.rows());
   if (C && A.rows() > 0) {
     // (A M⁻¹ C) λ = −b − A M⁻¹ f, then q̈ = M⁻¹ (f + C λ): not symmetric

@@ -50,7 +50,7 @@ struct CompiledSystemData {
   std::vector<double> inputs;
   std::vector<double> outputs;
   Eigen::MatrixXd mass_matrix;
-  // M's Cholesky factor (numeric/cholesky.hpp, row-major) and M⁻¹ Aᵀ, of the last solve
+  // M's L D Lᵀ factors (numeric/ldlt.hpp, row-major) and M⁻¹ Aᵀ, of the last solve
   std::vector<double> mass_factor;
   Eigen::MatrixXd inverse_mass_transposed_constraints;
   Eigen::VectorXd forcing;
@@ -174,7 +174,7 @@ class CompiledSystem {
   std::vector<std::string> observation_names_;
   std::vector<bool> is_position_;
   // Some coordinates are redundant (Euler parameters): M is semi-definite, whatever round-off
-  // makes of its Cholesky factor, and the saddle-point system is solved instead.
+  // makes of its L D Lᵀ factors, and the saddle-point system is solved instead.
   bool redundant_coordinates_ = false;
   // The tapes as native functions (dynamics, constraints, observer, friction), when built.
   std::shared_ptr<const NativeLibrary> native_;

@@ -1,6 +1,6 @@
-// cholesky_factor / cholesky_solve against Eigen's LLT, the identity L Lᵀ = M, and the refusal of
+// ldlt_factor / ldlt_solve against Eigen's LLT, the identity L D Lᵀ = M, and the refusal of
 // matrices that are not positive definite.
-#include "unidyn/numeric/cholesky.hpp"
+#include "unidyn/numeric/ldlt.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,20 +22,23 @@ RowMajor random_spd(std::size_t n, std::mt19937& random) {
   return B * B.transpose() + double(n) * Eigen::MatrixXd::Identity(N, N);
 }
 
-TEST(Cholesky, FactorTimesItsTransposeIsTheMatrix) {
+TEST(Ldlt, FactorsReassembleTheMatrix) {
   std::mt19937 random(7);
   for (std::size_t n : {1, 2, 3, 6, 10, 23}) {
     const RowMajor M = random_spd(n, random);
     RowMajor F = M;
-    ASSERT_TRUE(cholesky_factor(F.data(), n));
-    // L: the lower triangle with the diagonal's reciprocal undone
+    ASSERT_TRUE(ldlt_factor(F.data(), n));
+    // L (unit diagonal) from the lower triangle, d from the diagonal's reciprocal
     const auto N = static_cast<Eigen::Index>(n);
-    Eigen::MatrixXd L = Eigen::MatrixXd::Zero(N, N);
+    Eigen::MatrixXd L = Eigen::MatrixXd::Identity(N, N);
+    Eigen::VectorXd d(N);
     for (Eigen::Index i = 0; i < N; ++i) {
       for (Eigen::Index j = 0; j < i; ++j) L(i, j) = F(i, j);
-      L(i, i) = 1.0 / F(i, i);
+      d[i] = 1.0 / F(i, i);
+      EXPECT_GT(d[i], 0.0);
     }
-    EXPECT_LE((L * L.transpose() - Eigen::MatrixXd(M)).norm(), 1e-13 * M.norm()) << n;
+    EXPECT_LE((L * d.asDiagonal() * L.transpose() - Eigen::MatrixXd(M)).norm(), 1e-13 * M.norm())
+        << n;
     // the upper triangle is left as it was
     for (Eigen::Index i = 0; i < N; ++i) {
       for (Eigen::Index j = i + 1; j < N; ++j) EXPECT_EQ(F(i, j), M(i, j));
@@ -43,7 +46,7 @@ TEST(Cholesky, FactorTimesItsTransposeIsTheMatrix) {
   }
 }
 
-TEST(Cholesky, SolvesAsEigensLltDoes) {
+TEST(Ldlt, SolvesAsEigensLltDoes) {
   std::mt19937 random(11);
   std::uniform_real_distribution<double> u(-1, 1);
   for (std::size_t n : {1, 2, 4, 10, 31}) {
@@ -51,16 +54,16 @@ TEST(Cholesky, SolvesAsEigensLltDoes) {
     const auto N = static_cast<Eigen::Index>(n);
     const Eigen::VectorXd f = Eigen::VectorXd::NullaryExpr(N, [&] { return u(random); });
     RowMajor F = M;
-    ASSERT_TRUE(cholesky_factor(F.data(), n));
+    ASSERT_TRUE(ldlt_factor(F.data(), n));
     Eigen::VectorXd x = f;
-    cholesky_solve(F.data(), n, x.data());
+    ldlt_solve(F.data(), n, x.data());
     const Eigen::VectorXd expected = Eigen::MatrixXd(M).llt().solve(f);
     EXPECT_LE((x - expected).norm(), 1e-12 * expected.norm()) << n;
     EXPECT_LE((M * x - f).norm(), 1e-12 * f.norm()) << n;
     // a strided right-hand side: a row of a row-major block, every third entry
     std::vector<double> strided(3 * n, 99.0);
     for (std::size_t i = 0; i < n; ++i) strided[3 * i] = f[Eigen::Index(i)];
-    cholesky_solve(F.data(), n, strided.data(), 3);
+    ldlt_solve(F.data(), n, strided.data(), 3);
     for (std::size_t i = 0; i < n; ++i) {
       EXPECT_EQ(strided[3 * i], x[Eigen::Index(i)]);
       EXPECT_EQ(strided[3 * i + 1], 99.0);
@@ -68,20 +71,20 @@ TEST(Cholesky, SolvesAsEigensLltDoes) {
   }
 }
 
-TEST(Cholesky, RefusesWhatIsNotPositiveDefinite) {
+TEST(Ldlt, RefusesWhatIsNotPositiveDefinite) {
   // semi-definite (rank one), indefinite, negative, and a NaN
   std::vector<double> rank_one = {1, 2, 2, 4};
   std::vector<double> indefinite = {1, 2, 2, 1};
   std::vector<double> negative = {-1};
   std::vector<double> nan = {1, 0, 0, std::nan("")};
-  EXPECT_FALSE(cholesky_factor(rank_one.data(), 2));
-  EXPECT_FALSE(cholesky_factor(indefinite.data(), 2));
-  EXPECT_FALSE(cholesky_factor(negative.data(), 1));
-  EXPECT_FALSE(cholesky_factor(nan.data(), 2));
+  EXPECT_FALSE(ldlt_factor(rank_one.data(), 2));
+  EXPECT_FALSE(ldlt_factor(indefinite.data(), 2));
+  EXPECT_FALSE(ldlt_factor(negative.data(), 1));
+  EXPECT_FALSE(ldlt_factor(nan.data(), 2));
   // and the 4×4 mass matrix of Euler parameters' redundant coordinates, singular: e ⊗ e of a unit e
   const Eigen::Vector4d e(0.5, 0.5, 0.5, 0.5);
   RowMajor P = e * e.transpose();
-  EXPECT_FALSE(cholesky_factor(P.data(), 4));
+  EXPECT_FALSE(ldlt_factor(P.data(), 4));
 }
 
 }  // namespace
