@@ -190,7 +190,8 @@ std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunct
                                       std::function<void(double, Eigen::VectorXd&)> projection) {
   if (options.method == "rk4") return std::make_unique<Rk4>(std::move(rhs), fixed_step(options));
   if (options.method == "dopri5" || options.method == "dop853") {
-    DormandPrinceOptions o;
+    DormandPrinceOptions o =
+        options.method == "dop853" ? DormandPrinceOptions::dop853() : DormandPrinceOptions{};
     o.rtol = options.rtol;
     o.atol = options.atol;
     o.max_steps = options.max_steps;

@@ -1,9 +1,18 @@
 // M = L D Lᵀ without square roots, and the solve with it.
 #include "unidyn/numeric/ldlt.hpp"
 
-namespace unidyn {
+#include <type_traits>
 
-bool ldlt_factor(double* m, std::size_t n) {
+namespace unidyn {
+namespace {
+
+// The sizes whose loops are unrolled: the arithmetic is the same, in the same order, so results do
+// not depend on it; small systems lose the loop overhead of their two- and three-term sums.
+template <std::size_t N>
+using Fixed = std::integral_constant<std::size_t, N>;
+
+template <class Size>
+bool factor(double* m, Size n) {
   // Column k at step k; below the diagonal a row i > k holds c_il until its own step.
   for (std::size_t k = 0; k < n; ++k) {
     double* row_k = m + k * n;
@@ -27,7 +36,8 @@ bool ldlt_factor(double* m, std::size_t n) {
   return true;
 }
 
-void ldlt_solve(const double* factor, std::size_t n, double* x, std::size_t stride) {
+template <class Size>
+void solve(const double* factor, Size n, double* x, std::size_t stride) {
   // L y = x, forward (unit diagonal)
   for (std::size_t i = 0; i < n; ++i) {
     const double* row_i = factor + i * n;
@@ -40,6 +50,46 @@ void ldlt_solve(const double* factor, std::size_t n, double* x, std::size_t stri
     double sum = x[i * stride] * factor[i * n + i];
     for (std::size_t k = i + 1; k < n; ++k) sum -= factor[k * n + i] * x[k * stride];
     x[i * stride] = sum;
+  }
+}
+
+}  // namespace
+
+bool ldlt_factor(double* m, std::size_t n) {
+  switch (n) {
+    case 1:
+      return factor(m, Fixed<1>{});
+    case 2:
+      return factor(m, Fixed<2>{});
+    case 3:
+      return factor(m, Fixed<3>{});
+    case 4:
+      return factor(m, Fixed<4>{});
+    case 5:
+      return factor(m, Fixed<5>{});
+    case 6:
+      return factor(m, Fixed<6>{});
+    default:
+      return factor(m, n);
+  }
+}
+
+void ldlt_solve(const double* factor, std::size_t n, double* x, std::size_t stride) {
+  switch (n) {
+    case 1:
+      return solve(factor, Fixed<1>{}, x, stride);
+    case 2:
+      return solve(factor, Fixed<2>{}, x, stride);
+    case 3:
+      return solve(factor, Fixed<3>{}, x, stride);
+    case 4:
+      return solve(factor, Fixed<4>{}, x, stride);
+    case 5:
+      return solve(factor, Fixed<5>{}, x, stride);
+    case 6:
+      return solve(factor, Fixed<6>{}, x, stride);
+    default:
+      return solve(factor, n, x, stride);
   }
 }
 

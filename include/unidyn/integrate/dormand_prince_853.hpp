@@ -18,7 +18,8 @@ namespace unidyn {
 class DormandPrince853 final : public EmbeddedRungeKutta {
  public:
   // Throws std::invalid_argument for inconsistent options.
-  explicit DormandPrince853(OdeFunction rhs, DormandPrinceOptions options = {});
+  explicit DormandPrince853(OdeFunction rhs,
+                            DormandPrinceOptions options = DormandPrinceOptions::dop853());
 
   std::string_view name() const override { return "dop853"; }
 

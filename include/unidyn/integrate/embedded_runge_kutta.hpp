@@ -11,7 +11,7 @@
 namespace unidyn {
 
 // Settings of the Dormand–Prince pairs (dopri5, dop853); the defaults are those of Hairer's DOPRI5
-// except the tolerances.
+// except the tolerances, and dop853() gives those of his DOP853.
 struct DormandPrinceOptions {
   // Error test: sqrt(mean((err_i / (atol + rtol max(|y_i|, |y_new_i|)))²)) ≤ 1. atol must be
   // positive.
@@ -34,6 +34,15 @@ struct DormandPrinceOptions {
   double min_factor = 0.2;
   double max_factor = 10.0;
   double beta = 0.04;
+
+  // Hairer's DOP853 controller: no PI term (beta 0), steps changed by factors in [1/3, 6].
+  static DormandPrinceOptions dop853() {
+    DormandPrinceOptions o;
+    o.min_factor = 0.333;
+    o.max_factor = 6.0;
+    o.beta = 0.0;
+    return o;
+  }
 };
 
 // An explicit Runge–Kutta pair with an embedded error estimate and first same as last: the last
