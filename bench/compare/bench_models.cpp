@@ -63,6 +63,7 @@ BenchModel bench_model(const std::string& name, const std::string& models) {
   }
   if (name == "rolling-disk") return {name, equations_only(models + "/rolling-disk.yaml"), {}};
   if (name == "kepler") return {name, equations_only(models + "/kepler.yaml"), {}};
+  if (name == "bicycle") return {name, equations_only(models + "/bicycle.yaml"), {}};
   throw std::invalid_argument("unknown benchmark model " + name);
 }
 

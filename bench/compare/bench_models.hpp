@@ -18,8 +18,9 @@ struct BenchModel {
   std::optional<EulerSet> euler;  // heavy-top (3-1-3), torque-free (3-2-1)
 };
 
-// pendulum-N (generated), heavy-top, torque-free, rolling-disk or kepler (models/); `models` is the
-// directory of the bundled model files. Throws std::invalid_argument for another name.
+// pendulum-N (generated), heavy-top, torque-free, rolling-disk, kepler or bicycle (models/);
+// `models` is the directory of the bundled model files. Throws std::invalid_argument for another
+// name.
 BenchModel bench_model(const std::string& name, const std::string& models);
 
 // The YAML text of pendulum-N: N point masses on unit links, relative hinge angles q1..qN.

@@ -2,7 +2,8 @@
 // right-hand-side evaluation time, and time to accuracy, on the models of bench/MODELS.md.
 //
 //   unidyn_bench derive MODEL [--method lagrange|kane] [--repeat K] [--states FILE]
-//   unidyn_bench rhs MODEL [--evaluation tape|native]         (states on stdin, peer convention)
+//   unidyn_bench rhs MODEL [--evaluation tape|native] [--state stdin|initial]  (states on stdin,
+//                                           peer convention; or the model's initial state)
 //   unidyn_bench simulate MODEL --t-end T --method M [--rtol R] [--step H] [--evaluation E]
 //   unidyn_bench longrun MODEL --steps N --step H [--method rattle|dopri5] [--rtol R]
 //
@@ -136,7 +137,13 @@ int rhs(const std::string& name, const std::map<std::string, std::string>& o) {
                                 compile_options(option(o, "--evaluation", "native")));
   const SimulationStart initial = initial_state(model.system, {});
   CompiledSystemData data = compiled.make_data();
-  const std::vector<Eigen::VectorXd> states = read_states(std::cin);
+  // --state initial: the model's initial state instead (a model no peer has, the bicycle)
+  const std::vector<Eigen::VectorXd> states =
+      option(o, "--state", "stdin") == "initial"
+          ? std::vector<Eigen::VectorXd>{(Eigen::VectorXd(2 * initial.q.size()) << initial.q,
+                                          initial.qdot)
+                                             .finished()}
+          : read_states(std::cin);
   Eigen::VectorXd q, qdot, qddot, lambda;
   for (const Eigen::VectorXd& state : states) {
     bench::from_peer_state(model, state, q, qdot);
