@@ -266,6 +266,37 @@ class Bench:
         self.say()
 
     # 9. Ensembles: the overhead of a sweep --------------------------------------------------------
+    def batched_rhs(self, package, cli):
+        """`Model.rhs` over many states in one call against one call per state (Python): the
+        per-call throughput and the batch's, and whether the accelerations are the same bits."""
+        if not os.path.isdir(os.path.join(package, "unidyn")):
+            return "Batched right-hand side: the Python module is not built."
+        count = 2000 if self.quick else 20000
+        script = f"""
+import json, time, numpy, unidyn
+model = unidyn.load("double-pendulum")
+rng = numpy.random.default_rng(3)
+q, qd = rng.uniform(-1, 1, ({count}, 2)), rng.uniform(-1, 1, ({count}, 2))
+model.rhs(q[0], qd[0])  # compiled before either is timed
+start = time.perf_counter()
+single = numpy.array([model.rhs(q[k], qd[k])[0] for k in range({count})])
+per_call = time.perf_counter() - start
+start = time.perf_counter()
+batch = model.rhs(q, qd)[0]
+batched = time.perf_counter() - start
+print(json.dumps({{"per_call": per_call, "batched": batched,
+                  "same": bool((single == batch).all())}}))
+"""
+        env = dict(os.environ, PYTHONPATH=package, UNIDYN_EXECUTABLE=cli)
+        r = json.loads(run(["/usr/bin/python3", "-c", script], env=env).splitlines()[-1])
+        return (f"Batched right-hand side (goal of issue 17: ≥ 1.5× the per-call throughput): "
+                f"`Model.rhs` of the double pendulum at {count} random states, one call per state "
+                f"{r['per_call'] / count * 1e6:.2f} µs a state, one call with the {count} × 2 "
+                f"arrays {r['batched'] / count * 1e6:.3f} µs a state "
+                f"({r['per_call'] / r['batched']:.0f}×); accelerations "
+                f"{'identical bit for bit' if r['same'] else 'DIFFERENT'}. The batch is a loop of "
+                f"the compiled solve in C++ (no vectorisation across states).\n")
+
     def ensembles(self):
         runs = 6 if self.quick else 40
         self.say("## 9. Ensembles: a sweep against plain `simulate` calls\n")
@@ -327,6 +358,8 @@ print(json.dumps({{"loop": looped, "sweep": time.perf_counter() - start}}))
         self.say("|---|---|---|---|---|---|---|---|")
         self.say(f"| {runs} | " + " | ".join(cells) + f" | {processes:.2f} s | {swept:.2f} s | "
                  f"{processes / swept:.2f}× | {difference:.1e} |")
+        self.say()
+        self.say(self.batched_rhs(package, cli))
         self.say()
 
     # 7. Micro benchmarks -------------------------------------------------------------------------
