@@ -91,6 +91,15 @@ def test_simulate_is_the_commands_run(command):
     assert list(frame.columns) == run.columns and frame.shape == run.data.shape
 
 
+def test_simulate_with_dop853_follows_dopri5():
+    top = unidyn.load("heavy-top")
+    eighth, fifth = top.simulate(t_end=1, method="dop853"), top.simulate(t_end=1)
+    assert "(dop853)" in eighth.summary and "(dopri5)" in fifth.summary
+    assert eighth.data.shape == fifth.data.shape
+    # both at the model's rtol 1e-12: the same motion to far below the plot's resolution
+    assert np.max(np.abs(eighth.data - fifth.data)) < 1e-8
+
+
 def test_simulate_keeps_events_and_refuses_bad_options():
     ball = unidyn.load("bouncing-ball").simulate(t_end=2)
     impacts = [t for t, what in ball.events if "impact" in what]
