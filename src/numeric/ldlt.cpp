@@ -11,6 +11,27 @@ namespace {
 template <std::size_t N>
 using Fixed = std::integral_constant<std::size_t, N>;
 
+// f(Fixed<n>) for the unrolled sizes, else f(n).
+template <class F>
+decltype(auto) with_size(std::size_t n, F&& f) {
+  switch (n) {
+    case 1:
+      return f(Fixed<1>{});
+    case 2:
+      return f(Fixed<2>{});
+    case 3:
+      return f(Fixed<3>{});
+    case 4:
+      return f(Fixed<4>{});
+    case 5:
+      return f(Fixed<5>{});
+    case 6:
+      return f(Fixed<6>{});
+    default:
+      return f(n);
+  }
+}
+
 template <class Size>
 bool factor(double* m, Size n) {
   // Column k at step k; below the diagonal a row i > k holds c_il until its own step.
@@ -56,41 +77,11 @@ void solve(const double* factor, Size n, double* x, std::size_t stride) {
 }  // namespace
 
 bool ldlt_factor(double* m, std::size_t n) {
-  switch (n) {
-    case 1:
-      return factor(m, Fixed<1>{});
-    case 2:
-      return factor(m, Fixed<2>{});
-    case 3:
-      return factor(m, Fixed<3>{});
-    case 4:
-      return factor(m, Fixed<4>{});
-    case 5:
-      return factor(m, Fixed<5>{});
-    case 6:
-      return factor(m, Fixed<6>{});
-    default:
-      return factor(m, n);
-  }
+  return with_size(n, [&](auto size) { return factor(m, size); });
 }
 
 void ldlt_solve(const double* factor, std::size_t n, double* x, std::size_t stride) {
-  switch (n) {
-    case 1:
-      return solve(factor, Fixed<1>{}, x, stride);
-    case 2:
-      return solve(factor, Fixed<2>{}, x, stride);
-    case 3:
-      return solve(factor, Fixed<3>{}, x, stride);
-    case 4:
-      return solve(factor, Fixed<4>{}, x, stride);
-    case 5:
-      return solve(factor, Fixed<5>{}, x, stride);
-    case 6:
-      return solve(factor, Fixed<6>{}, x, stride);
-    default:
-      return solve(factor, n, x, stride);
-  }
+  with_size(n, [&](auto size) { solve(factor, size, x, stride); });
 }
 
 }  // namespace unidyn
