@@ -1,6 +1,7 @@
 // Unilateral constraints: phases, event functions, contact loss and impacts.
 #include "unidyn/integrate/contacts.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -99,9 +100,10 @@ std::string Contacts::handle(double t, const Eigen::VectorXd& q, Eigen::VectorXd
   const double e = restitution_[which];
   // rate ≥ 0: back at Ψ = 0 right after leaving it, too soon to resolve — a resting contact
   if (rate < 0.0 && e * std::abs(rate) > kRestingRebound) {
-    impulse(t, q, qdot, k, -e * rate);
+    const double nu = impulse(t, q, qdot, k, -e * rate);
     return "impact on " + name + ": rate " + detail::to_text(rate) + " -> " +
-           detail::to_text(-e * rate) + " (restitution " + detail::to_text(e) + ")";
+           detail::to_text(-e * rate) + " (restitution " + detail::to_text(e) + "), impulse " +
+           detail::to_text(nu);
   }
   impulse(t, q, qdot, k, 0.0);
   if (try_hold(t, q, qdot, k)) {
@@ -110,8 +112,8 @@ std::string Contacts::handle(double t, const Eigen::VectorXd& q, Eigen::VectorXd
   return name + " touched and left";
 }
 
-void Contacts::impulse(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot, std::size_t k,
-                       double target) {
+double Contacts::impulse(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot,
+                         std::size_t k, double target) {
   // [M  −Aᵀ; A  0] [Δq̇; ν] = [0; Δrate]: rows of the active constraints keep their rates
   Eigen::VectorXd qddot, lambda;
   data_.active = active_;
@@ -139,7 +141,11 @@ void Contacts::impulse(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot
     throw std::runtime_error("the impact on '" + system_.constraints[k].name +
                              "' cannot be resolved (dependent constraints)");
   }
-  qdot += lu.solve(rhs).head(n);
+  const Eigen::VectorXd jump = lu.solve(rhs);
+  qdot += jump.head(n);
+  // ν of row k: the impulse ν ∂Ψ/∂r it gives a particle (∂Ψ/∂x̄, ∂Ψ/∂ω a body)
+  const auto row = std::find(rows.begin(), rows.end(), static_cast<Eigen::Index>(k)) - rows.begin();
+  return jump[n + row];
 }
 
 bool Contacts::try_hold(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
