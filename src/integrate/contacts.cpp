@@ -112,8 +112,8 @@ std::string Contacts::handle(double t, const Eigen::VectorXd& q, Eigen::VectorXd
   return name + " touched and left";
 }
 
-double Contacts::impulse(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot,
-                         std::size_t k, double target) {
+double Contacts::impulse(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot, std::size_t k,
+                         double target) {
   // [M  −Aᵀ; A  0] [Δq̇; ν] = [0; Δrate]: rows of the active constraints keep their rates
   Eigen::VectorXd qddot, lambda;
   data_.active = active_;

@@ -56,14 +56,14 @@ TEST(RollerCoaster, CrestsUnstableBottomsOscillateAtPiRootGA) {
 TEST(RollerCoaster, RestsAnywhereOnlyIfStaticFrictionExceedsPiAOverL0) {
   const double steepest = pi * A / L0;
   for (const double factor : {1.01, 0.99}) {
-    const test::ModelRun run = test::run_model(
-        "roller-coaster", {{"mu_s", factor * steepest},
-                           {"mu_d", 0.5 * steepest},
-                           {"x1", 0.5 * L0},
-                           {"y", 0.0},
-                           {"der(x1)", 0.0},
-                           {"der(y)", 0.0}},
-        [](SimulationOptions& o) { o.t_end = 2.0; });
+    const test::ModelRun run = test::run_model("roller-coaster",
+                                               {{"mu_s", factor * steepest},
+                                                {"mu_d", 0.5 * steepest},
+                                                {"x1", 0.5 * L0},
+                                                {"y", 0.0},
+                                                {"der(x1)", 0.0},
+                                                {"der(y)", 0.0}},
+                                               [](SimulationOptions& o) { o.t_end = 2.0; });
     ASSERT_TRUE(run.summary.ok) << run.summary.message;
     const double moved = std::abs(run.rows.back()[run.index("x1")] - 0.5 * L0);
     if (factor > 1) {

@@ -40,7 +40,7 @@ class Contacts {
   // q̇ after an impulse that sets the rates of the rows to `target` (others active: 0 change);
   // returns row k's impulse ν.
   double impulse(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot, std::size_t k,
-               double target);
+                 double target);
   // Activates k if its force then pushes; returns whether it does.
   bool try_hold(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, std::size_t k);
 
