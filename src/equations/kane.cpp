@@ -10,6 +10,8 @@ struct Accumulator {
   const System& system;
   ExprMatrix& mass;
   std::vector<Expr>& convective;
+  // the same sums, term by term, for their numeric evaluation
+  std::vector<PartialVelocityTerm>& terms;
 
   // A point mass m moving with position r(q, t): ∂v/∂q̇^i = ∂r/∂q^i, a⁰ = d/dt(v) at q̈ = 0.
   void point(const Expr& m, const VectorExpr& r) {
@@ -24,11 +26,15 @@ struct Accumulator {
     }
     const VectorExpr a0{config.convective_derivative(v[0]), config.convective_derivative(v[1]),
                         config.convective_derivative(v[2])};
+    PartialVelocityTerm term{m, std::nullopt, {}, {}, a0 * m};
     for (std::size_t i = 0; i < n; ++i) {
       if (is_zero(partial[i])) continue;
       for (std::size_t j = i; j < n; ++j) mass(i, j) += m * dot(partial[i], partial[j]);
       convective[i] += m * dot(partial[i], a0);
+      term.columns.push_back(i);
+      term.partial_velocity.push_back(partial[i]);
     }
+    if (!term.columns.empty()) terms.push_back(std::move(term));
   }
 
   // Body b's rotation on its own basis e1, e2, e3 (Euler's equations): with ω0 = Qᵀ ω,
@@ -49,11 +55,15 @@ struct Accumulator {
       partial[i] = diff(omega0, q[i].rate);
       J_partial[i] = times(J0, partial[i]);
     }
+    PartialVelocityTerm term{0, J0, {}, {}, H0_dot0};
     for (std::size_t i = 0; i < n; ++i) {
       if (is_zero(partial[i])) continue;
       for (std::size_t j = i; j < n; ++j) mass(i, j) += dot(partial[i], J_partial[j]);
       convective[i] += dot(partial[i], H0_dot0);
+      term.columns.push_back(i);
+      term.partial_velocity.push_back(partial[i]);
     }
+    if (!term.columns.empty()) terms.push_back(std::move(term));
   }
 
   static bool is_zero(const VectorExpr& v) {
@@ -68,7 +78,7 @@ EquationsOfMotion kane_equations(const System& system) {
   EquationsOfMotion eq = energies_and_forces(system);
   // M and c from every particle and body: Σ m a · ∂v/∂q̇^i = Σ_j M_ij q̈^j + c_i
   std::vector<Expr> convective(n, 0);
-  Accumulator sum{system, eq.mass_matrix, convective};
+  Accumulator sum{system, eq.mass_matrix, convective, eq.partial_velocity_terms};
   for (const Particle& p : system.particles) sum.point(p.mass, p.position);
   for (std::size_t b = 0; b < system.bodies.size(); ++b) {
     sum.point(system.bodies[b].mass, system.bodies[b].center);

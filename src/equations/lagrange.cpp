@@ -73,13 +73,14 @@ void finish_equations(const System& system, const std::vector<Expr>& convective,
   const std::size_t n = q.size();
   // row i: Σ_j M_ij q̈^j + c_i + ∂U/∂q^i − Φ_i = 0, so f_i = Φ_i − ∂U/∂q^i − c_i
   eq.forcing.assign(n, 0);
+  eq.applied_forcing.assign(n, 0);
   eq.inertia_terms.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     Expr inertia = convective[i];
     for (std::size_t j = 0; j < n; ++j) inertia += eq.mass_matrix(i, j) * q[j].acceleration;
     eq.inertia_terms[i] = inertia;
-    eq.forcing[i] =
-        eq.generalized_force[i] - derivative(eq.potential_energy, q[i].value) - convective[i];
+    eq.applied_forcing[i] = eq.generalized_force[i] - derivative(eq.potential_energy, q[i].value);
+    eq.forcing[i] = eq.applied_forcing[i] - convective[i];
   }
   constraint_rows(system, eq);
 }

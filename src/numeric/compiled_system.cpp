@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 #include <system_error>
 #include <thread>
@@ -27,14 +28,49 @@ std::vector<Expr> tape_inputs(const System& system, bool with_accelerations) {
   return inputs;
 }
 
-Tape dynamics_tape(const System& system, const EquationsOfMotion& derived) {
+namespace {
+
+// outputs, then A (row by row) and b in their evaluation form, on a tape of inputs [t, q, q̇, p]
+Tape with_constraint_rows(std::vector<Expr> outputs, const EquationsOfMotion& eq,
+                          const std::vector<Expr>& inputs) {
+  outputs.insert(outputs.end(), eq.constraint_matrix.data.begin(), eq.constraint_matrix.data.end());
+  outputs.insert(outputs.end(), eq.constraint_bias.begin(), eq.constraint_bias.end());
+  return Tape::compile(outputs, inputs);
+}
+
+Tape dynamics_tape(const std::vector<Expr>& inputs, const EquationsOfMotion& derived) {
   const EquationsOfMotion eq = evaluation_form(derived);
   std::vector<Expr> outputs = eq.mass_matrix.data;
   outputs.insert(outputs.end(), eq.forcing.begin(), eq.forcing.end());
-  outputs.insert(outputs.end(), eq.constraint_matrix.data.begin(), eq.constraint_matrix.data.end());
-  outputs.insert(outputs.end(), eq.constraint_bias.begin(), eq.constraint_bias.end());
-  return Tape::compile(outputs, tape_inputs(system, false));
+  return with_constraint_rows(std::move(outputs), eq, inputs);
 }
+
+// Φ − ∂U/∂q, the assembly's values (m or J0, J, h per term), A, b
+Tape assembled_dynamics_tape(const std::vector<Expr>& inputs, const EquationsOfMotion& derived,
+                             const InertiaAssembly& assembly) {
+  EquationsOfMotion applied = derived;
+  applied.mass_matrix = ExprMatrix();
+  applied.forcing = derived.applied_forcing;
+  const EquationsOfMotion eq = evaluation_form(applied);
+  std::vector<Expr> outputs = eq.forcing;
+  outputs.insert(outputs.end(), assembly.outputs().begin(), assembly.outputs().end());
+  return with_constraint_rows(std::move(outputs), eq, inputs);
+}
+
+}  // namespace
+
+Tape dynamics_tape(const System& system, const EquationsOfMotion& derived) {
+  return dynamics_tape(tape_inputs(system, false), derived);
+}
+
+// The M, f, A, b tape of a system whose right-hand side assembles M: compiled when first asked
+// for, from copies of what it needs (the System need not outlive the CompiledSystem).
+struct DeferredTape {
+  std::vector<Expr> inputs;
+  EquationsOfMotion equations;
+  std::once_flag once;
+  Tape tape;
+};
 
 namespace {
 
@@ -129,9 +165,19 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
     : n_(system.coordinates().size()),
       m_(system.constraints.size()),
       p_(system.parameters.size()),
-      dynamics_(dynamics_tape(system, equations)),
+      assembly_(!equations.partial_velocity_terms.empty() && n_ >= options.assemble_from_coordinates
+                    ? std::make_shared<const InertiaAssembly>(equations.partial_velocity_terms, n_)
+                    : nullptr),
+      dynamics_(assembly_
+                    ? assembled_dynamics_tape(tape_inputs(system, false), equations, *assembly_)
+                    : dynamics_tape(system, equations)),
       constraints_(compile_constraints(system, equations)),
       observer_(compile_observer(system, equations)) {
+  if (assembly_) {
+    full_dynamics_ = std::make_shared<DeferredTape>();
+    full_dynamics_->inputs = tape_inputs(system, false);
+    full_dynamics_->equations = equations;
+  }
   const std::vector<FrictionContact> contacts = friction_contacts(system);
   friction_ = compile_friction(system, contacts);
   for (const auto& c : contacts) friction_constraint_.push_back(c.constraint);
@@ -200,6 +246,14 @@ std::string CompiledSystem::evaluation() const {
   return background_->evaluation;
 }
 
+const Tape& CompiledSystem::dynamics() const {
+  if (!full_dynamics_) return dynamics_;
+  DeferredTape& deferred = *full_dynamics_;
+  std::call_once(deferred.once,
+                 [&] { deferred.tape = dynamics_tape(deferred.inputs, deferred.equations); });
+  return deferred.tape;
+}
+
 std::size_t CompiledSystem::instruction_count() const {
   return dynamics_.instruction_count() + constraints_.instruction_count() +
          observer_.instruction_count() + friction_.instruction_count();
@@ -240,6 +294,8 @@ CompiledSystemData CompiledSystem::make_data() const {
   data.mass_matrix.resize(n_, n_);
   data.mass_factor.resize(n_ * n_);
   data.forcing.resize(n_);
+  data.convective.resize(n_);
+  data.assembly_scratch.resize(assembly_ ? assembly_->scratch_size() : 0);
   data.constraint_matrix.resize(m_, n_);
   data.constraint_bias.resize(m_);
   data.constraint_velocity_term.resize(m_);
@@ -274,17 +330,29 @@ void CompiledSystem::solve(double t, StateRef q, StateRef qdot, std::span<const 
   const double* out = evaluate_at(dynamics_, t, q, qdot, parameters, data);
   const auto N = static_cast<Eigen::Index>(n_);
   const auto Mc = static_cast<Eigen::Index>(m_);
+  // M (row-major) into the factor's buffer and f: read off the tape, or summed from the partial
+  // velocities with f = (Φ − ∂U/∂q) − c
+  const double* constraint_rows = nullptr;
+  if (assembly_) {
+    assembly_->assemble(out + n_, data.mass_factor.data(), data.convective.data(),
+                        data.assembly_scratch);
+    data.forcing = Eigen::Map<const Eigen::VectorXd>(out, N) - data.convective;
+    constraint_rows = out + n_ + assembly_->outputs().size();
+  } else {
+    std::copy(out, out + n_ * n_, data.mass_factor.begin());
+    data.forcing = Eigen::Map<const Eigen::VectorXd>(out + n_ * n_, N);
+    constraint_rows = out + n_ * n_ + n_;
+  }
+  const double* M = data.mass_factor.data();
   data.mass_matrix =
-      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-          out, N, N);
-  std::copy(out, out + n_ * n_, data.mass_factor.begin());
-  data.forcing = Eigen::Map<const Eigen::VectorXd>(out + n_ * n_, N);
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(M, N,
+                                                                                               N);
   data.constraint_matrix =
       Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-          out + n_ * n_ + n_, Mc, N);
-  data.constraint_bias = Eigen::Map<const Eigen::VectorXd>(out + n_ * n_ + n_ + m_ * n_, Mc);
+          constraint_rows, Mc, N);
+  data.constraint_bias = Eigen::Map<const Eigen::VectorXd>(constraint_rows + m_ * n_, Mc);
 
-  if (!all_finite(out, n_ * n_)) {
+  if (!all_finite(M, n_ * n_)) {
     throw std::runtime_error("the mass matrix is not finite at t = " + std::to_string(t));
   }
   if (!friction_constraint_.empty()) {

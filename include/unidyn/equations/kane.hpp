@@ -9,7 +9,8 @@
 // same M q̈ = f + Aᵀλ as lagrange_equations (Σ m a · ∂v/∂q̇^i = d/dt(∂T/∂q̇^i) − ∂T/∂q^i, (10.16)),
 // without differentiating T: only positions, centres and ω are differentiated, so the cost grows
 // with the size of the velocities rather than of T (an n-link chain: n² small derivatives, not n²
-// derivatives of a T with n² terms).
+// derivatives of a T with n² terms). Each particle's and body's share is also kept as a
+// PartialVelocityTerm (J, W, h), for the numeric M and c (numeric/inertia_assembly.hpp).
 #pragma once
 
 #include "unidyn/equations/lagrange.hpp"

@@ -9,16 +9,35 @@
 // acceleration level A q̈ + b = 0.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "unidyn/model/system.hpp"
 
 namespace unidyn {
 
+// One particle's or one body's share of Kane's sums (equations/kane.hpp): with its partial
+// velocities J = [∂v/∂q̇^i] (3 × n, nonzero only in `columns`), a weight W and its inertia force h,
+//   M += Jᵀ W J,   c += Jᵀ h
+// (a point: W = m I, J = ∂v/∂q̇, h = m a⁰; a body's rotation on its own basis: W = J0, J = ∂ω0/∂q̇,
+// h = J0 ω̇0⁰ + ω0 × J0 ω0). Evaluated numerically, M and c cost O(n²) per point instead of the
+// symbolic M's O(n⁴) terms for a chain (numeric/inertia_assembly.hpp).
+struct PartialVelocityTerm {
+  Expr mass;                                 // a point's m
+  std::optional<GiNaC::matrix> inertia;      // a rotation's J0 (W = J0); none for a point
+  std::vector<std::size_t> columns;          // the coordinates with a nonzero partial velocity
+  std::vector<VectorExpr> partial_velocity;  // ∂v/∂q̇^i (or ∂ω0/∂q̇^i), one per column
+  VectorExpr inertia_force;                  // h
+};
+
 struct EquationsOfMotion {
   // M q̈ = f + Aᵀ λ
   ExprMatrix mass_matrix;
   std::vector<Expr> forcing;
+  // f = applied_forcing − c: Φ − ∂U/∂q, and the convective terms c
+  std::vector<Expr> applied_forcing;
+  // M and c as sums over the particles and bodies (Kane's method only; empty otherwise)
+  std::vector<PartialVelocityTerm> partial_velocity_terms;
   // Each row a_k of A and e_k: the constraints at velocity level, a_k · q̇ + e_k = 0.
   ExprMatrix constraint_matrix;
   std::vector<Expr> constraint_velocity_term;

@@ -17,6 +17,7 @@
 
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/model/system.hpp"
+#include "unidyn/numeric/inertia_assembly.hpp"
 #include "unidyn/numeric/native_code.hpp"
 #include "unidyn/numeric/tape.hpp"
 
@@ -54,6 +55,9 @@ struct CompiledSystemData {
   std::vector<double> mass_factor;
   Eigen::MatrixXd inverse_mass_transposed_constraints;
   Eigen::VectorXd forcing;
+  // the convective terms c and the scratch of an assembled M (numeric/inertia_assembly.hpp)
+  Eigen::VectorXd convective;
+  std::vector<double> assembly_scratch;
   Eigen::MatrixXd constraint_matrix;
   Eigen::VectorXd constraint_bias;
   Eigen::VectorXd constraint_velocity_term;
@@ -76,10 +80,16 @@ struct CompileOptions {
   // switch happens); the CompiledSystem's end waits for the compilation, which fills the cache.
   bool background = false;
   NativeOptions native_options;
+  // M and c summed numerically from the partial velocities (numeric/inertia_assembly.hpp) when
+  // the equations carry them (Kane's) and have at least this many coordinates; below it the
+  // symbolic M, simplified, is cheaper (bench/: pendulum-N, heavy top).
+  std::size_t assemble_from_coordinates = 10;
 };
 
 // Native code being compiled in the background (compiled_system.cpp).
 struct BackgroundCompilation;
+// A tape compiled at its first use (compiled_system.cpp).
+struct DeferredTape;
 
 // Tape inputs [t, q, q̇, p] (with_accelerations: [t, q, q̇, q̈, λ, p]).
 std::vector<Expr> tape_inputs(const System& system, bool with_accelerations);
@@ -116,7 +126,11 @@ class CompiledSystem {
 
   // The tapes of inputs [t, q, q̇, p] (tape_inputs): the dynamics → M (row by row), f, A (row by
   // row), b; the constraints → A, e (A q̇ + e = 0), Ψ (position constraints; 0 for the others).
-  const Tape& dynamics() const { return dynamics_; }
+  // When M is assembled from the partial velocities, the dynamics tape is compiled at its first
+  // use (the right-hand side does not need it).
+  const Tape& dynamics() const;
+  // Whether M and c are summed from the partial velocities (CompileOptions).
+  bool assembles_inertia() const { return assembly_ != nullptr; }
   const Tape& constraint_tape() const { return constraints_; }
 
   // The rough contacts' numbers at (t, q, q̇) into data.friction.
@@ -166,7 +180,12 @@ class CompiledSystem {
            CompiledSystemData& data) const;
 
   std::size_t n_ = 0, m_ = 0, p_ = 0;
-  Tape dynamics_;     // [t, q, q̇, p] → M, f, A, b
+  // M and c from the partial velocities; null: M and f on the tape
+  std::shared_ptr<const InertiaAssembly> assembly_;
+  // [t, q, q̇, p] → M, f, A, b; or, with assembly_, → Φ − ∂U/∂q, the assembly's values, A, b
+  Tape dynamics_;
+  // with assembly_: the M, f, A, b tape, compiled at the first call of dynamics()
+  std::shared_ptr<DeferredTape> full_dynamics_;
   Tape constraints_;  // [t, q, q̇, p] → A, e, Ψ
   Tape observer_;     // [t, q, q̇, q̈, λ, p] → T, U, outputs, conserved, stop_when
   Tape friction_;     // [t, q, q̇, p] → per rough contact J, e, bias, g, μ_d, μ_s
