@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "pendulum_model.hpp"
 #include "unidyn/model/system.hpp"
 #include "unidyn/rotation/euler_angles.hpp"
 
@@ -22,9 +23,6 @@ struct BenchModel {
 // `models` is the directory of the bundled model files. Throws std::invalid_argument for another
 // name.
 BenchModel bench_model(const std::string& name, const std::string& models);
-
-// The YAML text of pendulum-N: N point masses on unit links, relative hinge angles q1..qN.
-std::string pendulum_text(int links);
 
 // Peer state → unidyn (q, q̇): pendulums as they are; bodies from quaternion (w, x, y, z) and ω_b.
 void from_peer_state(const BenchModel& model, const Eigen::VectorXd& peer, Eigen::VectorXd& q,

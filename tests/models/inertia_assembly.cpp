@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <random>
 
+#include "../../bench/compare/pendulum_model.hpp"
 #include "support/model_run.hpp"
 #include "unidyn/equations/kane.hpp"
 
@@ -88,21 +89,9 @@ INSTANTIATE_TEST_SUITE_P(Models, InertiaAssemblyModels,
                            return name;
                          });
 
-// A planar chain of `links` point masses in relative angles (as bench/'s pendulum-N).
+// A planar chain of `links` point masses in relative angles: bench/'s pendulum-N.
 System chain(int links) {
-  std::string text = "unidyn: 1\nname: chain\nparameters: {m: 1.0, L: 1.0, g: 9.81}\n";
-  text += "coordinates: [";
-  for (int k = 1; k <= links; ++k) text += (k > 1 ? ", q" : "q") + std::to_string(k);
-  text += "]\nparticles:\n";
-  std::string theta;
-  for (int k = 1; k <= links; ++k) {
-    theta += (k > 1 ? " + q" : "q") + std::to_string(k);
-    text += "  P" + std::to_string(k) + ": {mass: m, position: \"" +
-            (k > 1 ? "P" + std::to_string(k - 1) + ".position + " : std::string()) + "L*[sin(" +
-            theta + "), -cos(" + theta + "), 0]\"}\n";
-  }
-  text += "forces:\n  - gravity: -g*E2\n";
-  return parse_model(text, "chain.yaml");
+  return parse_model(bench::pendulum_text(links), "chain.yaml");
 }
 
 // A 12-link chain assembles M by default (CompileOptions: from 10 coordinates), on a tape less
