@@ -103,6 +103,82 @@ TEST(Curvilinear, ParabolicBases) {
   }
 }
 
+// Each component of two vectors equal, after simplification.
+void expect_equal(const VectorExpr& a, const VectorExpr& b, const char* what) {
+  for (int k = 0; k < 3; ++k) EXPECT_TRUE(vanishes(a[k] - b[k])) << what << " component " << k;
+}
+
+// §1.5 (1.6): q¹ = y, q² = x − y², q³ = z, so r = (q² + (q¹)², q¹, q³): a₁ = 2q¹ E1 + E2,
+// a^1 = grad q¹ = E2, a^2 = grad q² = E1 − 2q¹ E2, and a^1 · a^2 = −2q¹ (not orthogonal).
+TEST(Curvilinear, NonOrthogonalCoordinatesOfSection15) {
+  const GiNaC::realsymbol q1("q1"), q2("q2"), q3("q3");
+  const CurvilinearCoordinates c = curvilinear_coordinates({q2 + pow(q1, 2), q1, q3}, {q1, q2, q3});
+  expect_equal(c.covariant_basis[0], {2 * q1, 1, 0}, "a_1");
+  expect_equal(c.contravariant_basis[0], {0, 1, 0}, "a^1");
+  expect_equal(c.contravariant_basis[1], {1, -2 * q1, 0}, "a^2");
+  EXPECT_TRUE(vanishes(dot(c.contravariant_basis[0], c.contravariant_basis[1]) + 2 * q1));
+}
+
+// Ex. 1.3, cylindrical coordinates {r, θ, z}: a₂ = r e_θ, a^2 = e_θ/r, and the metric diag(1, r²,
+// 1) of T = (m/2)(ṙ² + r² θ̇² + ż²).
+TEST(Curvilinear, CylindricalCoordinatesOfExercise13) {
+  const GiNaC::realsymbol r("r"), th("theta"), z("z");
+  const CurvilinearCoordinates c =
+      curvilinear_coordinates({r * cos(th), r * sin(th), z}, {r, th, z});
+  const VectorExpr e_theta{-sin(th), cos(th), 0};
+  expect_equal(c.covariant_basis[1], r * e_theta, "a_2");
+  expect_equal(c.contravariant_basis[1], e_theta / r, "a^2");
+  const Expr metric[3] = {1, pow(r, 2), 1};
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      EXPECT_TRUE(vanishes(c.metric(i, k) - (i == k ? metric[i] : Expr(0)))) << i << k;
+    }
+  }
+}
+
+// Ex. 1.6, helicoidal coordinates {θ, r, ν = z − α r θ}: T = (m/2)[(1 + α²θ²) ṙ² + (1 + α²) r² θ̇²
+// + ν̇² + …], i.e. a_rr = 1 + α²θ², a_θθ = (1 + α²) r², a_νν = 1.
+TEST(Curvilinear, HelicoidalCoordinatesOfExercise16) {
+  const GiNaC::realsymbol th("theta"), r("r"), nu("nu"), alpha("alpha");
+  const CurvilinearCoordinates c =
+      curvilinear_coordinates({r * cos(th), r * sin(th), nu + alpha * r * th}, {th, r, nu});
+  EXPECT_TRUE(vanishes(c.metric(1, 1) - (1 + pow(alpha * th, 2))));
+  EXPECT_TRUE(vanishes(c.metric(0, 0) - (1 + pow(alpha, 2)) * pow(r, 2)));
+  EXPECT_TRUE(vanishes(c.metric(2, 2) - 1));
+  EXPECT_TRUE(vanishes(c.metric(0, 1) - pow(alpha, 2) * r * th));
+}
+
+// Ex. 1.7–1.9, oblique coordinates q¹ = x₁ sec α, q² = x₂ − x₁ tan α (x₁ = q¹ cos α, x₂ = q² +
+// q¹ sin α): a₁ = cos α E1 + sin α E2, a₂ = E2, a^1 = sec α E1, a^2 = −tan α E1 + E2 (1.24)–(1.25);
+// b = 10 E1 + 5 E2 + 6 E3 has b₁ = 10 cos α + 5 sin α, b^1 = 10 sec α, b^2 = 5 − 10 tan α
+// (Ex. 1.8); a_ik a^kj = δ_i^j and b_i = a_ik b^k (Ex. 1.9). At α = π/2 there is no basis.
+TEST(Curvilinear, ObliqueCoordinatesOfExercises17To19) {
+  const GiNaC::realsymbol q1("q1"), q2("q2"), q3("q3"), alpha("alpha");
+  const std::vector<Expr> q{q1, q2, q3};
+  const CurvilinearCoordinates c =
+      curvilinear_coordinates({q1 * cos(alpha), q2 + q1 * sin(alpha), q3}, q);
+  expect_equal(c.covariant_basis[0], {cos(alpha), sin(alpha), 0}, "a_1");
+  expect_equal(c.covariant_basis[1], {0, 1, 0}, "a_2");
+  expect_equal(c.contravariant_basis[0], {1 / cos(alpha), 0, 0}, "a^1");
+  expect_equal(c.contravariant_basis[1], {-sin(alpha) / cos(alpha), 1, 0}, "a^2");
+  const VectorExpr b{10, 5, 6};
+  EXPECT_TRUE(vanishes(dot(b, c.covariant_basis[0]) - (10 * cos(alpha) + 5 * sin(alpha))));
+  EXPECT_TRUE(vanishes(dot(b, c.contravariant_basis[0]) - 10 / cos(alpha)));
+  EXPECT_TRUE(vanishes(dot(b, c.contravariant_basis[1]) - (5 - 10 * sin(alpha) / cos(alpha))));
+  for (std::size_t i = 0; i < 3; ++i) {
+    Expr b_lower = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      Expr delta = 0;
+      for (std::size_t l = 0; l < 3; ++l) delta += c.metric(i, l) * c.inverse_metric(l, k);
+      EXPECT_TRUE(vanishes(delta - (i == k ? 1 : 0))) << i << k;
+      b_lower += c.metric(i, k) * dot(b, c.contravariant_basis[k]);
+    }
+    EXPECT_TRUE(vanishes(b_lower - dot(b, c.covariant_basis[i]))) << i;
+  }
+  EXPECT_THROW(curvilinear_coordinates({q1 * 0, q2 + q1, q3}, q),  // cos α = 0: a₁ = a₂ = E2
+               std::invalid_argument);
+}
+
 // Dependent coordinates have no dual basis
 TEST(Curvilinear, SingularMetricIsRefused) {
   const GiNaC::realsymbol x("x"), y("y");

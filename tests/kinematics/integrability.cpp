@@ -1,5 +1,6 @@
 // Integrability of velocity constraints: Jacobi's test (1.19)/(1.21) and Frobenius' (8.18), on the
-// book's examples (1.16), Exercises 1.10 and 1.11, and the rolling disk (10.27)–(10.28).
+// book's examples (1.14)–(1.16), Exercises 1.10 and 1.11, Problem 2.8, §5.2's extra constraint,
+// and the rolling disk (10.27)–(10.28), Ex. 8.9.
 #include "unidyn/kinematics/integrability.hpp"
 
 #include <gtest/gtest.h>
@@ -97,6 +98,61 @@ constraints:
   EXPECT_TRUE(constraint_integrability(s, 2).integrable);
   EXPECT_FALSE(set_integrability(s, {0, 1, 2}).integrable);
   EXPECT_TRUE(set_integrability(s, {2}).integrable);
+  // Ex. 8.9(d): with ẋ2 = 0 and ψ̇ = 0 as well the five leave one direction of motion: integrable
+  const System held = parse_model(R"yaml(unidyn: 1
+parameters: {R: 0.5}
+coordinates: [x1, x2, x3, psi, theta, phi]
+bodies:
+  disk:
+    mass: 1
+    inertia: [1, 1, 2]
+    rotation: {euler: 3-1-3, angles: [psi, theta, phi]}
+    center: [x1, x2, x3]
+constraints:
+  - {name: pi1, velocity: "der(x1) + R*der(phi)*cos(psi) + R*der(psi)*cos(theta)*cos(psi) - R*der(theta)*sin(theta)*sin(psi)"}
+  - {name: pi2, velocity: "der(x2) + R*der(phi)*sin(psi) + R*der(psi)*cos(theta)*sin(psi) + R*der(theta)*sin(theta)*cos(psi)"}
+  - {name: pi3, velocity: "der(x3) - R*der(theta)*cos(theta)"}
+  - {name: lane, velocity: der(x2)}
+  - {name: heading, velocity: der(psi)}
+)yaml",
+                                  "held.yaml");
+  EXPECT_FALSE(set_integrability(held, {0, 1, 2}).integrable);
+  EXPECT_TRUE(set_integrability(held, {0, 1, 2, 3, 4}).integrable);
+}
+
+// §1.8 (1.14): the hyperbola x y = c, z = 0 as velocity constraints y ẋ + x ẏ = 0, ż = 0:
+// integrable (Ψ = x y − c); (1.15) x ẏ = 0 passes Jacobi's test too (I = 0), though no smooth Ψ
+// holds for both of its branches y = const and x = 0 — the test is local.
+TEST(Integrability, HyperbolaAndThePiecewiseConstraint) {
+  const System hyperbola = particle_with(
+      "  - {name: hyperbola, velocity: y*der(x) + x*der(y)}\n"
+      "  - {name: plane, velocity: der(z)}\n");
+  EXPECT_TRUE(constraint_integrability(hyperbola, 0).integrable);
+  EXPECT_TRUE(set_integrability(hyperbola, {0, 1}).integrable);
+  const System piecewise = particle_with("  - {name: xy, velocity: x*der(y)}\n");
+  EXPECT_TRUE(constraint_integrability(piecewise, 0).integrable);
+}
+
+// Problem 2.8, (2.34): (x E3 + E2) · v = 0 is not integrable (f = (0, 1, x), f · rot f = −1);
+// E2 · v + e(t) = 0 is (Ψ = y + ∫e dt).
+TEST(Integrability, Problem28) {
+  const System s = particle_with(
+      "  - {name: first, velocity: x*der(z) + der(y)}\n"
+      "  - {name: second, velocity: der(y) + cos(t)}\n");
+  const Integrability first = constraint_integrability(s, 0);
+  EXPECT_FALSE(first.integrable);
+  EXPECT_TRUE((first.value * first.value - 1).is_zero()) << first.value;
+  EXPECT_TRUE(constraint_integrability(s, 1).integrable);
+}
+
+// §5.2: ẋ1 x2 − ẋ2 = 0 on the spring chain is integrable (the factor 1/x2: x2 e^{−x1} is constant).
+TEST(Integrability, SpringChainsExtraConstraint) {
+  const System s = parse_model(
+      "unidyn: 1\ncoordinates: [x1, x2]\nparticles:\n  P1: {mass: 1, position: [x1, 0, 0]}\n"
+      "  P2: {mass: 1, position: [x2, 0, 0]}\nconstraints:\n"
+      "  - {name: extra, velocity: x2*der(x1) - der(x2)}\n",
+      "chain.yaml");
+  EXPECT_TRUE(constraint_integrability(s, 0).integrable);
 }
 
 }  // namespace
