@@ -1,6 +1,9 @@
 #include "unidyn/kinematics/inertia.hpp"
 
+#include <cmath>
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "support/oracles.hpp"
 
@@ -128,6 +131,64 @@ TEST(Inertia, Realisability) {
     EXPECT_LT((inertia_from_euler_tensor(euler_tensor_from_inertia(J)) - J).cwiseAbs().maxCoeff(),
               1e-13);
   }
+}
+
+// The principal moments of a shape as a diagonal tensor.
+Tensor principal(const std::string& shape, double mass, const std::vector<Expr>& dimensions) {
+  const auto moments = shape_principal_moments(shape, mass, dimensions);
+  return Vec3(value(moments[0]), value(moments[1]), value(moments[2])).asDiagonal();
+}
+
+// Ex. 7.5(d): the Euler tensors E = ½ tr(J) I − J (7.17) of a sphere, (m R²/5) I, and of a
+// cylinder, diag(m R²/4, m R²/4, m L²/12) (the second moments ∫ x_i² dm).
+TEST(Inertia, EulerTensorsOfExercise75) {
+  const double m = 3.0, R = 0.4, L = 1.7;
+  const Tensor sphere = euler_tensor_from_inertia(principal("sphere", m, {Expr(R)}));
+  EXPECT_LT((sphere - Tensor::Identity() * m * R * R / 5).cwiseAbs().maxCoeff(), 1e-15);
+  const Tensor cylinder = euler_tensor_from_inertia(principal("cylinder", m, {Expr(R), Expr(L)}));
+  const Tensor expected = Vec3(m * R * R / 4, m * R * R / 4, m * L * L / 12).asDiagonal();
+  EXPECT_LT((cylinder - expected).cwiseAbs().maxCoeff(), 1e-15);
+}
+
+// Ex. 7.7(e): a cylinder (axis E3, centre X̄ = 0) about X_A = −x E1 − z E3, by (7.25):
+// J0^A_11 = m(L² + 3R² + 12z²)/12, J0^A_22 = m(L² + 3R² + 12x² + 12z²)/12,
+// J0^A_33 = m(R² + 2x²)/2, J0^A_13 = −m x z, J0^A_12 = J0^A_23 = 0.
+TEST(Inertia, CylinderAboutAPointOfExercise77) {
+  const double m = 2.0, R = 0.3, L = 1.2, x = 0.5, z = -0.7;
+  const Tensor J = parallel_axis(principal("cylinder", m, {Expr(R), Expr(L)}), m, Vec3(x, 0, z));
+  EXPECT_NEAR(J(0, 0), m * (L * L + 3 * R * R + 12 * z * z) / 12, 1e-14);
+  EXPECT_NEAR(J(1, 1), m * (L * L + 3 * R * R + 12 * x * x + 12 * z * z) / 12, 1e-14);
+  EXPECT_NEAR(J(2, 2), m * (R * R + 2 * x * x) / 2, 1e-14);
+  EXPECT_NEAR(J(0, 2), -m * x * z, 1e-14);
+  EXPECT_NEAR(J(2, 0), -m * x * z, 1e-14);
+  EXPECT_NEAR(J(0, 1), 0.0, 1e-15);
+  EXPECT_NEAR(J(1, 2), 0.0, 1e-15);
+}
+
+// Ex. 7.8: a box a × b × c about its centre on the basis E3 along the diagonal (a A1 − b A2 + c A3)
+// /√(a² + b² + c²), E1 = cos α A1 − sin α A3 (tan α = a/c), E2 = E3 × E1: at (a, b, c, m) =
+// (1, 2, 3, 12) the book's [J0] = [[12.2, 1.282854, 2.0283702], [1.282854, 8.8, −1.8973666],
+// [2.0283702, −1.8973666, 7.0]]; a cube's is (m a²/6) I on any basis.
+TEST(Inertia, BoxAboutItsDiagonalOfExercise78) {
+  const auto on_diagonal_basis = [](double a, double b, double c, double m) {
+    const Vec3 E3 = Vec3(a, -b, c).normalized();
+    const double alpha = std::atan2(a, c);
+    const Vec3 E1(std::cos(alpha), 0, -std::sin(alpha));
+    const Vec3 E2 = E3.cross(E1);
+    Tensor R;
+    R.row(0) = E1;
+    R.row(1) = E2;
+    R.row(2) = E3;
+    return Tensor(R * principal("box", m, {Expr(a), Expr(b), Expr(c)}) * R.transpose());
+  };
+  const Tensor J = on_diagonal_basis(1, 2, 3, 12);
+  const double book[3][3] = {
+      {12.2, 1.282854, 2.0283702}, {1.282854, 8.8, -1.8973666}, {2.0283702, -1.8973666, 7.0}};
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(J(i, k), book[i][k], 5e-7) << i << k;
+  }
+  const Tensor cube = on_diagonal_basis(0.7, 0.7, 0.7, 3.0);
+  EXPECT_LT((cube - Tensor::Identity() * 3.0 * 0.49 / 6).cwiseAbs().maxCoeff(), 1e-15);
 }
 
 }  // namespace

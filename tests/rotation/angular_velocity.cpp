@@ -7,6 +7,7 @@
 
 #include "support/oracles.hpp"
 #include "unidyn/rotation/axis_angle.hpp"
+#include "unidyn/rotation/euler_angles.hpp"
 
 namespace unidyn {
 namespace {
@@ -449,6 +450,61 @@ TEST(AngularVelocity, Exercise6_6c) {
                           psi_rate * E3;
     EXPECT_LE(max_abs_diff(omega_B, expected), kFdTolerance) << t;
     EXPECT_GT((omega_B - relative).norm(), 0.1) << t;
+  }
+}
+
+// §7.5, first example: Q(t) = L(ν̇0 t, E3) turns about its fixed axis: the axis q of Q, the axis s
+// of Q(t) Qᵀ(t0) and the instantaneous axis ω/‖ω‖ are all E3, with ω = ν̇0 E3.
+TEST(AngularVelocity, UniformRotationOfSection75) {
+  const double rate = 1.7, t0 = 0.2;
+  const auto Q = [&](double t) { return rotation_tensor(AxisAngle{basis_vector(3), rate * t}); };
+  for (const double t : {0.5, 1.1, 1.6}) {
+    const Vec3 omega = angular_velocity(Q(t), derivative(Q, t));
+    EXPECT_LE(max_abs_diff(omega, rate * basis_vector(3)), kFdTolerance) << t;
+    EXPECT_LE(max_abs_diff(axis_angle(Q(t)).axis, basis_vector(3)), 1e-15) << t;
+    const AxisAngle s = axis_angle(Q(t) * Q(t0).transpose());
+    EXPECT_LE(max_abs_diff(s.axis, basis_vector(3)), 1e-15) << t;
+    EXPECT_NEAR(s.angle, rate * (t - t0), 1e-14) << t;
+  }
+}
+
+// §7.5, (7.9): Q(t) = 2 q⊗q − I with q = cos(ν/2) E1 + sin(ν/2) E2, ν = ν̇0 (t − t0) + ν0, turns
+// at the constant ω = ν̇0 E3 (= 2 q × q̇) though its axis q moves and its angle stays π; the
+// rotation since t0 is Q(t) Qᵀ(t0) = L(ν − ν0, E3) (the translation's sign is wrong).
+TEST(AngularVelocity, ConstantOmegaWithAMovingAxisOf79) {
+  const double rate = 0.8, nu0 = 0.3, t0 = 0.0;
+  const auto nu = [&](double t) { return rate * (t - t0) + nu0; };
+  const auto q = [&](double t) { return Vec3(std::cos(nu(t) / 2), std::sin(nu(t) / 2), 0); };
+  const auto Q = [&](double t) -> Tensor { return 2 * dyad(q(t), q(t)) - Tensor::Identity(); };
+  for (const double t : {0.4, 1.3, 2.9}) {
+    ASSERT_TRUE(is_rotation(Q(t)));
+    const Vec3 omega = angular_velocity(Q(t), derivative(Q, t));
+    EXPECT_LE(max_abs_diff(omega, rate * basis_vector(3)), kFdTolerance) << t;
+    const AxisAngle own = axis_angle(Q(t));
+    EXPECT_NEAR(own.angle, kPi, 1e-7) << t;
+    EXPECT_NEAR(std::abs(own.axis.dot(q(t))), 1.0, 1e-12) << t;
+    EXPECT_NEAR(own.axis.dot(basis_vector(3)), 0.0, 1e-12) << t;  // q ⊥ ω
+    EXPECT_LE(max_abs_diff(Q(t) * Q(t0).transpose(),
+                           rotation_tensor(AxisAngle{basis_vector(3), nu(t) - nu0})),
+              1e-15)
+        << t;
+  }
+}
+
+// Exercise 11.5: in 3-1-3 angles e3 depends on ψ and θ alone; when they return, e3(t1) = e3(t0)
+// and the rotation since t0 is Q(t1) Qᵀ(t0) = L(φ(t1) − φ(t0), e3(t0)) whatever happened between.
+TEST(AngularVelocity, ReturnOfTheAxisOfExercise115) {
+  test::Random random;
+  const EulerSet set{3, 1, 3};
+  for (int n = 0; n < 20; ++n) {
+    const double psi = random.uniform(-3.0, 3.0), theta = random.uniform(0.2, 2.9);
+    const double phi0 = random.uniform(-3.0, 3.0), phi1 = random.uniform(-3.0, 3.0);
+    const Tensor Q0 = rotation_tensor(set, Vec3(psi, theta, phi0));
+    const Tensor Q1 = rotation_tensor(set, Vec3(psi, theta, phi1));
+    const Vec3 e3 = Q0 * basis_vector(3);
+    EXPECT_LE(max_abs_diff(Q1 * basis_vector(3), e3), 1e-15);
+    EXPECT_LE(max_abs_diff(Q1 * Q0.transpose(), rotation_tensor(AxisAngle{e3, phi1 - phi0})), 1e-14)
+        << n;
   }
 }
 

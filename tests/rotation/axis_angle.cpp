@@ -168,6 +168,27 @@ TEST(AxisAngle, Exercise6_7) {
   EXPECT_LE(max_abs_diff(found.axis, n), 1e-15);
 }
 
+// Exercise 6.5 (6.50): the navigation frame at latitude λ and longitude θ, north e_x =
+// (−cθ sλ, −sθ sλ, cλ), east e_y = (−sθ, cθ, 0), down e_z = (−cθ cλ, −sθ cλ, −sλ): R = e_x⊗E1 +
+// e_y⊗E2 + e_z⊗E3 = R2 R1 with R1 = L(θ, E3), R2 = L(−π/2 − λ, e_y); [R_ik] is (6.50)ᵀ.
+TEST(AxisAngle, NavigationFrameOfExercise65) {
+  test::Random random;
+  for (int n = 0; n < 20; ++n) {
+    const double lambda = random.uniform(-1.5, 1.5), theta = random.uniform(-3.0, 3.0);
+    const double cl = std::cos(lambda), sl = std::sin(lambda), ct = std::cos(theta),
+                 st = std::sin(theta);
+    const Vec3 e_x(-ct * sl, -st * sl, cl), e_y(-st, ct, 0), e_z(-ct * cl, -st * cl, -sl);
+    Tensor R;
+    R.col(0) = e_x;  // R = Σ e_k ⊗ E_k: column k is e_k
+    R.col(1) = e_y;
+    R.col(2) = e_z;
+    const Tensor R1 = rotation_tensor(AxisAngle{basis_vector(3), theta});
+    const Tensor R2 = rotation_tensor(AxisAngle{e_y, -kPi / 2 - lambda});
+    EXPECT_LE(max_abs_diff(R2 * R1, R), 1e-14) << n;
+    EXPECT_TRUE(is_rotation(R));
+  }
+}
+
 // Exercise 6.8: L(π/2, E2) L(π/2, E3) L(−π/2, E1) = L(π/2, E3).
 TEST(AxisAngle, Exercise6_8) {
   const Tensor product = rotation_tensor(AxisAngle{basis_vector(2), kPi / 2}) *

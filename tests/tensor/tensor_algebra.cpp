@@ -236,6 +236,18 @@ TEST(TensorAlgebra, ExerciseA2) {
   }
 }
 
+// Exercise A.5: a = e_r, b = e_θ (cylindrical, at angle θ): (a⊗b)u = e_r (e_θ · u).
+TEST(TensorAlgebra, ExerciseA5) {
+  Random rng(25);
+  for (int n = 0; n < 100; ++n) {
+    const double theta = rng.uniform(-3.0, 3.0);
+    const Vec3 e_r(std::cos(theta), std::sin(theta), 0),
+        e_theta(-std::sin(theta), std::cos(theta), 0);
+    const Vec3 u = rng.vector();
+    EXPECT_LE(max_abs_diff(tensor_product(e_r, e_theta) * u, e_r * e_theta.dot(u)), 1e-15);
+  }
+}
+
 // (A.4) Exercise: a = 10E1, b = 5E2 gives (a⊗b)u = 50 E1 (E2·u) and (b⊗a)u = 50 E2 (E1·u).
 TEST(TensorAlgebra, ExerciseA4) {
   const Vec3 a = 10.0 * E(1), b = 5.0 * E(2);
