@@ -3,6 +3,7 @@
 // equal −∂U/∂x̄ and −Σ ∂U/∂γ^i g^i with g^i from the rotation layer's dual Euler basis.
 #include <cmath>
 
+#include <vector>
 #include "support/model_run.hpp"
 #include "unidyn/rotation/euler_angles.hpp"
 #include "unidyn/symbolic/printing.hpp"
@@ -107,6 +108,30 @@ forces:
   EXPECT_TRUE(simplify(curl(ziegler, 2, 1) + M * GiNaC::sin(theta)).is_zero());
   for (std::size_t i = 0; i < 3; ++i) {
     for (std::size_t j = i + 1; j < 3; ++j) EXPECT_TRUE(curl(spring, i, j).is_zero()) << i << j;
+  }
+}
+
+// Exercise 8.6(b)–(d): the top about its fixed point (x̄ = L1 e3, J = λ_t (I − e3⊗e3) + λ_a e3⊗e3)
+// has T = ½ (λ_t + m L1²)(θ̇² + ψ̇² sin²θ) + ½ λ_a (φ̇ + ψ̇ cos θ)² in its 3-1-3 angles, at any state.
+TEST(ConservativeMoments, KineticEnergyOfTheTopOfExercise86) {
+  const double m = 1.0, L1 = 0.05, lt = 0.004, la = 0.002;
+  const System system = load_model(test::model_path("top-torsion-spring"));
+  const CompiledSystem compiled(system, lagrange_equations(system));
+  const SimulationStart start = initial_state(system, {});
+  CompiledSystemData data = compiled.make_data();
+  const Eigen::VectorXd none = Eigen::VectorXd::Zero(3), no_lambda(0);
+  std::vector<double> seen(compiled.observation_count());
+  for (int k = 0; k < 10; ++k) {
+    const double psi = 0.3 * k - 1, theta = 0.2 + 0.25 * k, phi = 0.7 * k;
+    const double dpsi = 1.5 - 0.2 * k, dtheta = 0.4 * k - 2, dphi = 30 + k;
+    Eigen::VectorXd q(3), qdot(3);
+    q << psi, theta, phi;
+    qdot << dpsi, dtheta, dphi;
+    compiled.observe(0, q, qdot, none, no_lambda, start.parameters, seen, data);
+    const double T =
+        0.5 * (lt + m * L1 * L1) * (dtheta * dtheta + dpsi * dpsi * std::pow(std::sin(theta), 2)) +
+        0.5 * la * std::pow(dphi + dpsi * std::cos(theta), 2);
+    EXPECT_NEAR(seen[0], T, 1e-12 * T) << k;
   }
 }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include <fstream>
 #include "support/model_run.hpp"
 #include "support/oracles.hpp"
 
@@ -192,6 +193,26 @@ TEST(Kepler, CircularOrbitStaysCircular) {
   EXPECT_LT(phase_error, 1e-9);
   record("max_radius_error", radius_error);
   record("max_phase_error", phase_error);
+}
+
+// §2.8: with no angular momentum (w0 = 0) the particle falls straight in and reaches the centre in
+// finite time; r(t) of the radial fall from rest at r0 solves t = √(r0³/(2GM)) (√(x(1 − x)) +
+// arccos √x), x = r/r0 (energy conservation, ṙ² = 2GM (1/r − 1/r0)): at r = r0/1000 the run,
+// stopped there by a `stop_when`, ends at that time; θ stays 0.
+TEST(Kepler, RadialFallWithoutAngularMomentum) {
+  std::ifstream file(test::model_path("kepler"));
+  std::stringstream text;
+  text << file.rdbuf() << "stop_when: [r - r0/1000]\n";
+  const test::ModelRun run =
+      test::run_system(parse_model(text.str(), "kepler-fall.yaml"), {{"w0", 0.0}});
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  ASSERT_TRUE(run.summary.stopped);
+  const double GM = 1.0, r0 = 1.0, x = 1e-3;
+  const double t_fall =
+      std::sqrt(r0 * r0 * r0 / (2 * GM)) * (std::sqrt(x * (1 - x)) + std::acos(std::sqrt(x)));
+  EXPECT_NEAR(run.summary.last_row_time, t_fall, 1e-9);
+  EXPECT_LT(t_fall, kPi / 2 * std::sqrt(r0 * r0 * r0 / (2 * GM)));  // before the collision at r = 0
+  for (std::size_t i = 0; i < run.rows.size(); ++i) EXPECT_EQ(run.at(i, "theta"), 0.0);
 }
 
 }  // namespace

@@ -241,5 +241,22 @@ TEST(RigidBodies, CompoundPendulumPeriod) {
   EXPECT_NEAR(measured, period, 2e-5 * period);
 }
 
+// §9.5: a torque-free body with equal moments turns at its constant initial ω about a fixed axis:
+// from Q(0) = I, Q(t) = L(|ω0| t, ω0/|ω0|), i.e. Euler parameters e0 = cos(|ω0| t/2),
+// e = sin(|ω0| t/2) ω0/|ω0| (ω0 = 5 E2 + 0.1 E3 of torque-free-quaternion).
+TEST(RigidBodies, SphericalBodyTurnsAboutAFixedAxis) {
+  const test::ModelRun run =
+      test::run_model("torque-free-quaternion", {{"l1", 4.0}, {"l2", 4.0}, {"l3", 4.0}});
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const double w = std::sqrt(25.0 + 0.01), axis[3] = {0.0, 5.0 / w, 0.1 / w};
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    const double t = run.at(i, "t");
+    EXPECT_NEAR(run.at(i, "e0"), std::cos(w * t / 2), 1e-9) << t;
+    EXPECT_NEAR(run.at(i, "e1"), std::sin(w * t / 2) * axis[0], 1e-9) << t;
+    EXPECT_NEAR(run.at(i, "e2"), std::sin(w * t / 2) * axis[1], 1e-9) << t;
+    EXPECT_NEAR(run.at(i, "e3"), std::sin(w * t / 2) * axis[2], 1e-9) << t;
+  }
+}
+
 }  // namespace
 }  // namespace unidyn

@@ -181,5 +181,27 @@ TEST(SphericalPendulum, AgreesWithBookEquationsByRk4) {
               errors[1], errors[2], errors[3]);
 }
 
+// Exercise 4.3: the metric of the spherical coordinates, M = m L² diag(1, sin²φ), is not positive
+// definite where sin φ = 0 (the poles): det M = m² L⁴ sin²φ, and there the solve refuses.
+TEST(SphericalPendulum, MassMatrixSingularAtThePoles) {
+  const System system = load_model(test::model_path("spherical-pendulum"));
+  const CompiledSystem compiled(system, lagrange_equations(system));
+  const SimulationStart start = initial_state(system, {});
+  CompiledSystemData data = compiled.make_data();
+  Eigen::VectorXd qddot, lambda, qdot(2);
+  qdot << 0.3, 0.7;
+  for (const double phi : {0.4, 1.3, 2.9}) {
+    Eigen::VectorXd q(2);
+    q << phi, 0.2;
+    compiled.solve(0, q, qdot, start.parameters, qddot, lambda, data);
+    EXPECT_NEAR(data.mass_matrix.determinant(), std::pow(std::sin(phi), 2), 1e-12) << phi;
+  }
+  Eigen::VectorXd pole(2);
+  pole << 0.0, 0.2;
+  EXPECT_THROW(compiled.solve(0, pole, qdot, start.parameters, qddot, lambda, data),
+               std::runtime_error);
+  EXPECT_EQ(data.mass_matrix.determinant(), 0.0);
+}
+
 }  // namespace
 }  // namespace unidyn
