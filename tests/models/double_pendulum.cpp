@@ -228,5 +228,27 @@ TEST(DoublePendulum, AgreesWithIndependentIntegration) {
   record("model_minus_rk4", difference);
 }
 
+// Exercise 5.4: the same pendulum in the coordinates of Exercise 5.3 — m1 cylindrical, m2 relative
+// to m1 spherical — held by the three constraints r1 = L1, z1 = 0, R2 = L0 on the representative
+// point, started in the plane: it stays there (φ2 = π/2) and its angles, measured from E1, are
+// double-pendulum's from the downward vertical less π/2, row by row.
+TEST(DoublePendulum, ThreeConstraintsOnTheRepresentativePointOfExercise54) {
+  const double half_pi = std::acos(0.0);
+  const test::ModelRun constrained = test::run_model("double-pendulum-constrained");
+  const test::ModelRun pendulum = test::run_model(
+      "double-pendulum",
+      {{"theta1", 0.5}, {"theta2", -0.3}, {"der(theta1)", 0.4}, {"der(theta2)", -0.2}},
+      [](SimulationOptions& o) { o.t_end = 10.0; });
+  ASSERT_TRUE(constrained.summary.ok && pendulum.summary.ok) << constrained.summary.message;
+  ASSERT_EQ(constrained.rows.size(), pendulum.rows.size());
+  for (std::size_t i = 0; i < pendulum.rows.size(); ++i) {
+    ASSERT_EQ(constrained.at(i, "t"), pendulum.at(i, "t"));
+    EXPECT_NEAR(constrained.at(i, "theta1") + half_pi, pendulum.at(i, "theta1"), 1e-9);
+    EXPECT_NEAR(constrained.at(i, "theta2") + half_pi, pendulum.at(i, "theta2"), 1e-9);
+    EXPECT_NEAR(constrained.at(i, "phi2"), half_pi, 1e-12);
+    EXPECT_NEAR(constrained.at(i, "z1"), 0.0, 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace unidyn

@@ -162,5 +162,43 @@ TEST(Paraboloid, NormalForceMultiplier) {
               fd_error, book_error, scale);
 }
 
+// Exercise 3.1(a): a free particle in parabolic coordinates (u, v, θ) under gravity −m g E3 has
+//   d/dt(m (u² + v²) u̇) − m (u̇² + v̇²) u − m v² u θ̇² = F·a₁ = −m g u,
+//   d/dt(m (u² + v²) v̇) − m (u̇² + v̇²) v − m u² v θ̇² = F·a₂ = m g v,   d/dt(m u² v² θ̇) = 0:
+// M = m diag(u² + v², u² + v², u² v²) and f from these rows, at random states.
+TEST(Paraboloid, FreeParticleInParabolicCoordinatesOfExercise31a) {
+  const double m = 0.7, g = 9.81;
+  const System system = parse_model(R"yaml(unidyn: 1
+parameters: {m: 0.7, g: 9.81}
+coordinates: [u, v, theta]
+particles:
+  P: {mass: m, position: "[u*v*cos(theta), u*v*sin(theta), (u^2 - v^2)/2]"}
+forces:
+  - gravity: -g*E3
+initial: {u: 1, v: 1}
+)yaml",
+                                    "parabolic.yaml");
+  const CompiledSystem compiled(system, lagrange_equations(system));
+  CompiledSystemData data = compiled.make_data();
+  const SimulationStart start = initial_state(system, {});
+  for (int k = 0; k < 10; ++k) {
+    const double u = 0.5 + 0.1 * k, v = 1.4 - 0.08 * k, ud = 0.3 - 0.07 * k, vd = 0.2 * k - 0.5,
+                 thd = 1.1 - 0.15 * k;
+    Eigen::VectorXd q(3), qdot(3), qddot, lambda;
+    q << u, v, 0.3 * k;
+    qdot << ud, vd, thd;
+    compiled.solve(0, q, qdot, start.parameters, qddot, lambda, data);
+    const double s = u * u + v * v, lead = 2 * m * (u * ud + v * vd);
+    const Eigen::Vector3d M(m * s, m * s, m * u * u * v * v);
+    const Eigen::Vector3d f(
+        -lead * ud + m * (ud * ud + vd * vd) * u + m * v * v * u * thd * thd - m * g * u,
+        -lead * vd + m * (ud * ud + vd * vd) * v + m * u * u * v * thd * thd + m * g * v,
+        -2 * m * (u * v * v * ud + u * u * v * vd) * thd);
+    EXPECT_LT((data.mass_matrix - Eigen::MatrixXd(M.asDiagonal())).cwiseAbs().maxCoeff(), 1e-13)
+        << k;
+    EXPECT_LT((data.forcing - f).cwiseAbs().maxCoeff(), 1e-12) << k;
+  }
+}
+
 }  // namespace
 }  // namespace unidyn

@@ -258,5 +258,49 @@ TEST(RigidBodies, SphericalBodyTurnsAboutAFixedAxis) {
   }
 }
 
+// §10.2: a free body with its centre in spherical coordinates (R, Θ, Φ; Φ from E3) and 3-1-3 angles
+// has T = m/2 (Ṙ² + R² Φ̇² + R² sin²Φ Θ̇²) + λ1/2 (ψ̇ sin φ sin θ + θ̇ cos φ)² + λ2/2 (ψ̇ cos φ sin θ −
+// θ̇ sin φ)² + λ3/2 (ψ̇ cos θ + φ̇)² (10.5); at Φ = 0, θ = 0 both charts are singular and the motion
+// Θ̇ = 1, ψ̇ = −φ̇ = 1 has T = 0.
+TEST(RigidBodies, FreeBodyKineticEnergyAndItsSingularCharts) {
+  const System system = parse_model(R"yaml(unidyn: 1
+parameters: {m: 2.0, l1: 1.0, l2: 2.0, l3: 2.5}
+coordinates: [R, Theta, Phi, psi, theta, phi]
+bodies:
+  body:
+    mass: m
+    inertia: [l1, l2, l3]
+    rotation: {euler: 3-1-3, angles: [psi, theta, phi]}
+    center: "R*[sin(Phi)*cos(Theta), sin(Phi)*sin(Theta), cos(Phi)]"
+initial: {R: 1.0, Phi: 1.0, theta: 1.0}
+)yaml",
+                                    "free-body.yaml");
+  const CompiledSystem compiled(system, lagrange_equations(system));
+  const SimulationStart start = initial_state(system, {});
+  CompiledSystemData data = compiled.make_data();
+  std::vector<double> seen(compiled.observation_count());
+  const Eigen::VectorXd none = Eigen::VectorXd::Zero(6), no_lambda(0);
+  const auto T_of = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
+    compiled.observe(0, q, qdot, none, no_lambda, start.parameters, seen, data);
+    return seen[0];
+  };
+  const double m = 2.0, l1 = 1.0, l2 = 2.0, l3 = 2.5;
+  Eigen::VectorXd q(6), qdot(6);
+  q << 1.5, 0.3, 0.8, 0.4, 1.1, -0.6;
+  qdot << 0.2, -0.7, 0.5, 1.3, 0.9, -0.4;
+  const double R = q[0], Ph = q[2], th = q[4], ph = q[5];
+  const double Rd = qdot[0], Thd = qdot[1], Phd = qdot[2], psd = qdot[3], thd = qdot[4],
+               phd = qdot[5];
+  const double T = m / 2 * (Rd * Rd + R * R * Phd * Phd + std::pow(R * std::sin(Ph) * Thd, 2)) +
+                   l1 / 2 * std::pow(psd * std::sin(ph) * std::sin(th) + thd * std::cos(ph), 2) +
+                   l2 / 2 * std::pow(psd * std::cos(ph) * std::sin(th) - thd * std::sin(ph), 2) +
+                   l3 / 2 * std::pow(psd * std::cos(th) + phd, 2);
+  EXPECT_NEAR(T_of(q, qdot), T, 1e-12 * T);
+  Eigen::VectorXd singular(6), moving(6);
+  singular << 1.5, 0.3, 0.0, 0.4, 0.0, -0.6;
+  moving << 0.0, 1.0, 0.0, 1.0, 0.0, -1.0;
+  EXPECT_NEAR(T_of(singular, moving), 0.0, 1e-15);
+}
+
 }  // namespace
 }  // namespace unidyn

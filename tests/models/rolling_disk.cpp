@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iterator>
 
+#include <sstream>
 #include "support/model_run.hpp"
 #include "unidyn/equations/reduction.hpp"
 #include "unidyn/kinematics/constraint_gradient.hpp"
@@ -153,6 +154,32 @@ TEST(RollingDisk, RollingShorthandIsTheWrittenOutConstraints) {
   for (std::size_t i = 0; i < rows.size(); i += 10) {
     for (std::size_t c = 1; c <= 6; ++c) EXPECT_NEAR(rows[i][c], written.rows[i][c], 1e-10);
   }
+}
+
+// Exercise 7.3: a rate gyro fixed to the disk along e3 reads ω3 = ω·e3 = φ̇ + ψ̇ cos θ (3-1-3), so
+// its integral is φ(t1) − φ(t0) only when ∫ ψ̇ cos θ dt = 0: along the rolling disk's motion
+// (Simpson's rule on a 1 ms grid) the two differ by that integral, which is not 0.
+TEST(RollingDisk, BodyFixedRateSensorOfExercise73) {
+  std::ifstream file(test::model_path("rolling-disk"));
+  std::stringstream text;
+  text << file.rdbuf() << "  w3: dot(disk.omega, disk.e3)\n  turn: der(psi)*cos(theta)\n";
+  const test::ModelRun run = test::run_system(parse_model(text.str(), "rolling-disk-gyro.yaml"), {},
+                                              [](SimulationOptions& o) {
+                                                o.t_end = 2.0;
+                                                o.output_step = 0.001;
+                                              });
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  double sensed = 0, turned = 0;
+  for (std::size_t i = 2; i < run.rows.size(); i += 2) {
+    const double h = run.at(i, "t") - run.at(i - 1, "t");
+    const auto simpson = [&](const char* c) {
+      return h / 3 * (run.at(i - 2, c) + 4 * run.at(i - 1, c) + run.at(i, c));
+    };
+    sensed += simpson("w3");
+    turned += simpson("turn");
+    EXPECT_NEAR(sensed, run.at(i, "phi") - run.at(0, "phi") + turned, 1e-9) << run.at(i, "t");
+  }
+  EXPECT_GT(std::abs(turned), 0.1);
 }
 
 }  // namespace

@@ -70,6 +70,28 @@ TEST(RollingSphere, SlidesThenRolls) {
   }
 }
 
+// Fig. 9.9: thrown with a spin ω0 = w E1 as well, the sphere's contact slips at v_P = (u0, w R, 0),
+// not along v̄: the slip keeps its direction c (v̇_P = −(7/2) μ_d g c), so the friction −μ_d m g c is
+// constant and the centre moves on a parabolic arc, x̄ = (u0 t, 0) − ½ μ_d g c t², until it rolls
+// at T = 2 |v_P|/(7 μ_d g).
+TEST(RollingSphere, SlidingCentreOnAParabolaOfFigure99) {
+  const double g = 9.81, R = 0.1, mu = 0.2, u0 = 2.0, w = 10.0;
+  const double slip = std::hypot(u0, w * R), cx = u0 / slip, cy = w * R / slip;
+  const double T = 2 * slip / (7 * mu * g);
+  // Q(0) = I: ė = ω/2
+  const test::ModelRun run = test::run_model("sphere-slide-roll", {{"der(e1)", w / 2}});
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  ASSERT_EQ(run.summary.phases.size(), 2u);
+  EXPECT_NEAR(run.summary.phases[1].t, T, 1e-10);
+  std::size_t sliding = 0;
+  for (std::size_t i = 0; i < run.rows.size() && run.at(i, "t") < T; ++i, ++sliding) {
+    const double t = run.at(i, "t");
+    EXPECT_NEAR(run.at(i, "x1"), u0 * t - 0.5 * mu * g * cx * t * t, 1e-9) << t;
+    EXPECT_NEAR(run.at(i, "x2"), -0.5 * mu * g * cy * t * t, 1e-9) << t;
+  }
+  EXPECT_GT(sliding, 10u);
+}
+
 // Inside a pipe of radius R about E2, the centre at angle θ from the lowest line moves on a circle
 // of radius R − r, and rolling (v̄ + ω × r n = 0 at the contact x̄ + r n) gives the sphere
 // ω = (R − r) θ̇/r E2: T = ½ (7/5) m (R − r)² θ̇², so (7/5)(R − r) θ̈ = −g sin θ, integrated here by

@@ -750,25 +750,25 @@ TEST(EulerBookExercise, E612SpaceFixed321IsBody123) {
   }
 }
 
-// Exercise 6.2(j): integrate (6.45) and compare with Q̇ = Q skew(ω_body) integrated directly.
-TEST(EulerBookExercise, E62jIntegrationOf323KinematicEquation) {
-  const EulerSet set = set_of("3-2-3");
-  const auto body_omega = [](double t) {
-    const double w1 = 0.2 * std::sin(0.5 * t);
-    return Vec3(w1, 0.2 * std::sin(0.05 * t), 10.0 * w1);
-  };
-  const double T = 20.0;
-  // h = 4e-3. RK4's global error is O(h⁴): already at h = 1e-2 the final angles agree with
-  // h = 1e-3 to 3e-11 (checked offline), so at h = 4e-3 the error is ≲ 1e-12, far below 1e-8.
-  const int steps = 5000;
-  const double h = T / steps;
+// Body angular velocity components ω_body(t), as gyros measure them.
+using BodySignals = std::function<Vec3(double)>;
 
-  // (6.45) via the library: γ̇ = ω · g^i, with the spatial ω = Q ω_body.
-  const auto angle_rates = [&](double t, const Vec3& g) {
-    return euler_angle_rates(set, g, rotation_tensor(set, g) * body_omega(t));
+// The attitude from gyro signals two ways, each by RK4 with `steps` steps to T: the Euler angles of
+// `set` by the library's (6.45)-type rates γ̇ = ω · g^i (the smallest and largest second angle met
+// in `second`), and Q by Q̇ = Q skew(ω_body) on its nine components; the angles' rotation tensor is
+// returned with Q.
+struct TwoAttitudes {
+  Vec3 angles;
+  Tensor Q;
+  double second_min, second_max;
+};
+TwoAttitudes integrate_attitude(const EulerSet& set, const BodySignals& body_omega, Vec3 g,
+                                double T, int steps) {
+  const double h = T / steps;
+  const auto angle_rates = [&](double t, const Vec3& a) {
+    return euler_angle_rates(set, a, rotation_tensor(set, a) * body_omega(t));
   };
-  Vec3 g(0.3, 1.0, 0.2);
-  double min_theta = g[1], max_theta = g[1];
+  TwoAttitudes out{g, rotation_tensor(set, g), g[1], g[1]};
   for (int n = 0; n < steps; ++n) {
     const double t = n * h;
     const Vec3 k1 = angle_rates(t, g);
@@ -776,16 +776,12 @@ TEST(EulerBookExercise, E62jIntegrationOf323KinematicEquation) {
     const Vec3 k3 = angle_rates(t + h / 2, g + h / 2 * k2);
     const Vec3 k4 = angle_rates(t + h, g + h * k3);
     g += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
-    min_theta = std::min(min_theta, g[1]);
-    max_theta = std::max(max_theta, g[1]);
+    out.second_min = std::min(out.second_min, g[1]);
+    out.second_max = std::max(out.second_max, g[1]);
   }
-  // The trajectory keeps well clear of θ = 0, π, where (6.45) is singular.
-  EXPECT_GT(min_theta, 0.5);
-  EXPECT_LT(max_theta, kPi - 0.5);
-
-  // Independent: Q̇ = Q skew(ω_body) on the nine components, from Rz(0.3) Ry(1.0) Rz(0.2).
+  out.angles = g;
   const auto Q_rate = [&](double t, const Tensor& Q) { return Tensor(Q * skew_of(body_omega(t))); };
-  Tensor Q = Rz(0.3) * Ry(1.0) * Rz(0.2);
+  Tensor Q = out.Q;
   for (int n = 0; n < steps; ++n) {
     const double t = n * h;
     const Tensor k1 = Q_rate(t, Q);
@@ -794,15 +790,46 @@ TEST(EulerBookExercise, E62jIntegrationOf323KinematicEquation) {
     const Tensor k4 = Q_rate(t + h, Q + h * k3);
     Q += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
   }
-  Q = orthonormalise(Q);
+  out.Q = orthonormalise(Q);
+  return out;
+}
 
-  EXPECT_LT(max_abs_diff(rotation_tensor(set, g), Q), 1e-8);
-  EXPECT_LT(max_abs_diff(Rz(g[0]) * Ry(g[1]) * Rz(g[2]), Q), 1e-8);
+// Exercise 6.2(j): integrate (6.45) and compare with Q̇ = Q skew(ω_body) integrated directly.
+TEST(EulerBookExercise, E62jIntegrationOf323KinematicEquation) {
+  const EulerSet set = set_of("3-2-3");
+  const auto body_omega = [](double t) {
+    const double w1 = 0.2 * std::sin(0.5 * t);
+    return Vec3(w1, 0.2 * std::sin(0.05 * t), 10.0 * w1);
+  };
+  // h = 4e-3. RK4's global error is O(h⁴): already at h = 1e-2 the final angles agree with
+  // h = 1e-3 to 3e-11 (checked offline), so at h = 4e-3 the error is ≲ 1e-12, far below 1e-8.
+  // Independent: Q from Rz(0.3) Ry(1.0) Rz(0.2), its nine components integrated.
+  const TwoAttitudes a = integrate_attitude(set, body_omega, Vec3(0.3, 1.0, 0.2), 20.0, 5000);
+  // The trajectory keeps well clear of θ = 0, π, where (6.45) is singular.
+  EXPECT_GT(a.second_min, 0.5);
+  EXPECT_LT(a.second_max, kPi - 0.5);
+  EXPECT_LT(max_abs_diff(rotation_tensor(set, a.angles), a.Q), 1e-8);
+  EXPECT_LT(max_abs_diff(Rz(a.angles[0]) * Ry(a.angles[1]) * Rz(a.angles[2]), a.Q), 1e-8);
   // The same final angles from the tensor integration.
-  const EulerAngles a = euler_angles(set, Q);
-  EXPECT_NEAR(angle_diff(a.angles[0], g[0]), 0.0, 1e-8);
-  EXPECT_NEAR(a.angles[1], g[1], 1e-8);
-  EXPECT_NEAR(angle_diff(a.angles[2], g[2]), 0.0, 1e-8);
+  const EulerAngles found = euler_angles(set, a.Q);
+  EXPECT_NEAR(angle_diff(found.angles[0], a.angles[0]), 0.0, 1e-8);
+  EXPECT_NEAR(found.angles[1], a.angles[1], 1e-8);
+  EXPECT_NEAR(angle_diff(found.angles[2], a.angles[2]), 0.0, 1e-8);
+}
+
+// Exercise 7.9(f): an aircraft starting level (3-1-2 angles 0) with gyro signals ω1 = 0.02 sin
+// 0.5t, ω2 = 0.02 sin 0.05t, ω3 = 2.0 sin 0.5t: the attitude from (7.28) is the one Q̇ = Q
+// skew(ω_body) gives (the book prints no numbers), clear of the set's singular roll ±π/2.
+TEST(EulerBookExercise, E79fAircraftAttitudeFromGyros) {
+  const EulerSet set = set_of("3-1-2");
+  const auto body_omega = [](double t) {
+    return Vec3(0.02 * std::sin(0.5 * t), 0.02 * std::sin(0.05 * t), 2.0 * std::sin(0.5 * t));
+  };
+  const TwoAttitudes a = integrate_attitude(set, body_omega, Vec3(0, 0, 0), 40.0, 10000);
+  EXPECT_GT(a.second_min, -kPi / 2 + 0.5);
+  EXPECT_LT(a.second_max, kPi / 2 - 0.5);
+  EXPECT_GT(a.second_max - a.second_min, 1e-3);  // it does roll
+  EXPECT_LT(max_abs_diff(rotation_tensor(set, a.angles), a.Q), 1e-8);
 }
 
 }  // namespace
