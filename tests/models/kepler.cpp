@@ -215,5 +215,25 @@ TEST(Kepler, RadialFallWithoutAngularMomentum) {
   for (std::size_t i = 0; i < run.rows.size(); ++i) EXPECT_EQ(run.at(i, "theta"), 0.0);
 }
 
+// Figs. 2.6, 2.8: from the pericentre r0 = 1 at speed w0 (G M = 1) the orbit is the conic
+// r (1 + e cos θ) = p with p = w0², e = w0² − 1: the circle (the equilibrium (w, w') = (1, 0)) at
+// w0 = 1, the parabola (e = 1) at w0 = √2 and a hyperbola (e = 1.5) at w0 = √2.5.
+TEST(Kepler, CircleParabolaAndHyperbolaOfFigures26And28) {
+  for (const double e : {0.0, 1.0, 1.5}) {
+    const double w0 = std::sqrt(1 + e), p = w0 * w0;
+    const test::ModelRun run =
+        test::run_model("kepler", {{"w0", w0}}, [](SimulationOptions& o) { o.t_end = 5.0; });
+    ASSERT_TRUE(run.summary.ok) << run.summary.message;
+    for (std::size_t i = 0; i < run.rows.size(); ++i) {
+      const double r = run.at(i, "r"), theta = run.at(i, "theta");
+      EXPECT_NEAR(r * (1 + e * std::cos(theta)), p, 1e-9)
+          << "e = " << e << ", t = " << run.at(i, "t");
+    }
+    if (e >= 1) {
+      EXPECT_GT(run.rows.back()[run.index("r")], 3.0) << e;  // escaping
+    }
+  }
+}
+
 }  // namespace
 }  // namespace unidyn
