@@ -5,6 +5,8 @@
 #include <cmath>
 #include <complex>
 
+#include <fstream>
+#include <sstream>
 #include "support/model_run.hpp"
 #include "unidyn/integrate/dormand_prince.hpp"
 #include "unidyn/integrate/driver.hpp"
@@ -44,6 +46,35 @@ TEST(RollingSphere, TurntableCirclesAtTwoSeventhsOmega) {
     EXPECT_NEAR(run.at(row, "x3"), 0.1, 1e-12) << t;
   }
   EXPECT_LT(run.summary.max_velocity_residual, 1e-10);
+}
+
+// Exercise 9.10(f): the centre's circle has centre c = z0 + i v0/κ and radius |v0|/κ, so on a
+// disc of radius R0 the sphere falls off only if |c| + |v0|/κ > R0: over a period the centre's
+// largest distance from the axis is |c| + |v0|/κ, and a `stop_when` at a radius 1 mm less is met,
+// 1 mm more is not.
+TEST(RollingSphere, TurntableEdgeOfExercise910f) {
+  const double kappa = 2 * 2.0 / 7;
+  const std::complex<double> z0(0.3, 0.0), v0(0.0, 0.1), i(0.0, 1.0);
+  const double reach = std::abs(z0 + i * v0 / kappa) + std::abs(v0) / kappa;
+  std::ifstream file(test::model_path("sphere-turntable"));
+  std::stringstream base;
+  base << file.rdbuf();
+  for (const double margin : {-1e-3, 1e-3}) {
+    std::stringstream text;
+    text << base.str() << "stop_when: [" << reach + margin << "^2 - x1^2 - x2^2]\n";
+    const test::ModelRun run =
+        test::run_system(parse_model(text.str(), "turntable-edge.yaml"), {},
+                         [&](SimulationOptions& o) { o.t_end = 2 * 3.14159265358979 / kappa; });
+    ASSERT_TRUE(run.summary.ok) << run.summary.message;
+    EXPECT_EQ(run.summary.stopped, margin < 0) << margin;
+    double farthest = 0;
+    for (std::size_t row = 0; row < run.rows.size(); ++row) {
+      farthest = std::max(farthest, std::hypot(run.at(row, "x1"), run.at(row, "x2")));
+    }
+    if (margin > 0) {
+      EXPECT_NEAR(farthest, reach, 1e-5);
+    }
+  }
 }
 
 // (9.27)–(9.29): thrown at u0 without spin, the sphere slides with ẍ1 = −μ_d g and
