@@ -32,6 +32,7 @@
 #include "unidyn/io/integrability_text.hpp"
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/io/phase_timings.hpp"
+#include "unidyn/io/potential_text.hpp"
 #include "unidyn/io/textbook_equations.hpp"
 #include "unidyn/kinematics/integrability.hpp"
 #include "unidyn/numeric/code_export.hpp"
@@ -51,10 +52,13 @@ EquationFormat parse_format(const std::string& format) {
   throw std::invalid_argument("--format must be text, latex, json, c, python or matlab");
 }
 
-// (1.21), (8.18): which velocity constraints are integrable, alone and together.
-void write_integrability(std::ostream& out, const System& system, EquationFormat format) {
+// (1.21), (8.18): which velocity constraints are integrable, alone and together;
+// and (2.5): which forces given without a potential have one.
+void write_integrability_and_potentials(std::ostream& out, const System& system,
+                                        EquationFormat format) {
   const std::string prefix = format == EquationFormat::latex ? "% " : "  ";
   for (const std::string& line : integrability_lines(system)) out << prefix << line << '\n';
+  for (const std::string& line : potential_lines(system)) out << prefix << line << '\n';
 }
 
 // The model's name as an identifier for exported functions: its file's stem, other characters as _.
@@ -120,8 +124,8 @@ void write_derivation(std::ostream& out, const ModelCommands& c, const CommandMo
       end_phase("print");
     }
     if (format != EquationFormat::json) {
-      write_integrability(out, system, format);
-      end_phase("integrability of the velocity constraints");
+      write_integrability_and_potentials(out, system, format);
+      end_phase("integrability of the velocity constraints, potentials of the forces");
     }
   } else if (c.method == "newton-euler") {
     write_newton(out, system, newton_equations(system), format);

@@ -4,27 +4,38 @@
 
 namespace unidyn {
 
-std::vector<Expr> generalized_forces(const System& system) {
+std::vector<Expr> element_generalized_forces(const System& system, const ForceElement& element,
+                                             const std::vector<VectorExpr>& omega) {
   const auto& q = system.coordinates();
-  const std::size_t n = q.size();
-  std::vector<Expr> phi(n, 0);
-  // Φ_i = Σ F · ∂r/∂q^i + Σ M · ∂ω/∂q̇^i over the non-conservative elements (10.x)
+  std::vector<Expr> phi(q.size(), 0);
+  // Φ_i = Σ F · ∂r/∂q^i + Σ M · ∂ω/∂q̇^i over the element's forces and moments (10.x)
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    for (const auto& [p, F] : element.forces) {
+      phi[i] += dot(F, diff(system.particles[p].position, q[i].value));
+    }
+    for (const auto& f : element.body_forces) phi[i] += dot(f.force, diff(f.point, q[i].value));
+    for (const auto& moment : element.moments) {
+      phi[i] += dot(moment.moment, diff(omega[moment.body], q[i].rate));
+    }
+  }
+  return phi;
+}
+
+std::vector<VectorExpr> angular_velocities(const System& system) {
   std::vector<VectorExpr> omega;
   for (std::size_t b = 0; b < system.bodies.size(); ++b)
     omega.push_back(system.angular_velocity(b));
+  return omega;
+}
+
+std::vector<Expr> generalized_forces(const System& system) {
+  // Φ over the non-conservative elements (the others enter through −∂U/∂q)
+  std::vector<Expr> phi(system.coordinates().size(), 0);
+  const std::vector<VectorExpr> omega = angular_velocities(system);
   for (const auto& element : system.forces) {
     if (element.conservative) continue;
-    for (std::size_t i = 0; i < n; ++i) {
-      for (const auto& [p, F] : element.forces) {
-        phi[i] += dot(F, diff(system.particles[p].position, q[i].value));
-      }
-      for (const auto& f : element.body_forces) {
-        phi[i] += dot(f.force, diff(f.point, q[i].value));
-      }
-      for (const auto& moment : element.moments) {
-        phi[i] += dot(moment.moment, diff(omega[moment.body], q[i].rate));
-      }
-    }
+    const std::vector<Expr> own = element_generalized_forces(system, element, omega);
+    for (std::size_t i = 0; i < phi.size(); ++i) phi[i] += own[i];
   }
   return phi;
 }

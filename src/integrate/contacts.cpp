@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "unidyn/integrate/impulsive_jump.hpp"
 #include "unidyn/numeric/number_text.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 
@@ -114,7 +115,7 @@ std::string Contacts::handle(double t, const Eigen::VectorXd& q, Eigen::VectorXd
 
 double Contacts::impulse(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot, std::size_t k,
                          double target) {
-  // [M  −Aᵀ; A  0] [Δq̇; ν] = [0; Δrate]: rows of the active constraints keep their rates
+  // the rows that hold keep their rates, row k's goes to `target` (impulsive_jump.hpp)
   Eigen::VectorXd qddot, lambda;
   data_.active = active_;
   compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data_);  // fills M
@@ -124,28 +125,19 @@ double Contacts::impulse(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qd
     if (active_[j] || j == k) rows.push_back(static_cast<Eigen::Index>(j));
   }
   const Eigen::MatrixXd A = data_.constraint_matrix(rows, Eigen::all);
-  const Eigen::Index n = qdot.size(), r = A.rows();
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n + r, n + r);
-  K.topLeftCorner(n, n) = data_.mass_matrix;
-  K.topRightCorner(n, r) = -A.transpose();
-  K.bottomLeftCorner(r, n) = A;
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + r);
   const Eigen::VectorXd rates = A * qdot + data_.constraint_velocity_term(rows);
-  for (Eigen::Index i = 0; i < r; ++i) {
-    rhs[n + i] =
-        (rows[static_cast<std::size_t>(i)] == static_cast<Eigen::Index>(k) ? target : 0.0) -
-        rates[i];
-  }
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(K);
-  if (!lu.isInvertible()) {
+  Eigen::VectorXd change = -rates;
+  const auto row = std::find(rows.begin(), rows.end(), static_cast<Eigen::Index>(k)) - rows.begin();
+  change[row] += target;
+  const auto jump =
+      impulsive_jump(data_.mass_matrix, A, Eigen::VectorXd::Zero(qdot.size()), change);
+  if (!jump) {
     throw std::runtime_error("the impact on '" + system_.constraints[k].name +
                              "' cannot be resolved (dependent constraints)");
   }
-  const Eigen::VectorXd jump = lu.solve(rhs);
-  qdot += jump.head(n);
+  qdot += jump->rate_change;
   // ν of row k: the impulse ν ∂Ψ/∂r it gives a particle (∂Ψ/∂x̄, ∂Ψ/∂ω a body)
-  const auto row = std::find(rows.begin(), rows.end(), static_cast<Eigen::Index>(k)) - rows.begin();
-  return jump[n + row];
+  return jump->constraint_impulse[row];
 }
 
 bool Contacts::try_hold(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "unidyn/equations/kane.hpp"
+#include "unidyn/integrate/applied_impulses.hpp"
 #include "unidyn/integrate/contacts.hpp"
 #include "unidyn/integrate/cvode.hpp"
 #include "unidyn/integrate/dormand_prince.hpp"
@@ -75,6 +76,7 @@ std::string energy_not_conserved(const System& system) {
   if (driven) add("driven by t");
   if (friction) add("dissipative: friction");
   if (impacts) add("dissipative: impacts with restitution < 1");
+  if (!system.impulses.empty()) add("impulses applied");
   return why;
 }
 
@@ -451,24 +453,27 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     data.active = contacts.active();
     projector.set_active(contacts.active());
   };
-  // Event functions: the unilateral contacts', the rough contacts', then each stop_when
-  // expression times its sign at the start.
+  // Event functions: the unilateral contacts', the rough contacts', the applied impulses' (at
+  // their times), then each stop_when expression times its sign at the start.
   FrictionPhases friction(system, compiled, parameters);
-  const std::size_t U = contacts.event_count(), F = friction.event_count();
+  AppliedImpulses impulses(system, compiled, parameters, start.t0);
+  const std::size_t U = contacts.event_count(), F = friction.event_count(),
+                    I = impulses.event_count(), UFI = U + F + I;
   std::vector<double> stop_sign(system.stop_when.size(), 1.0);
   const auto events = [&](double t, const Eigen::VectorXd& y, Eigen::VectorXd& g) {
-    g.resize(static_cast<Eigen::Index>(U + F + stop_sign.size()));
+    g.resize(static_cast<Eigen::Index>(UFI + stop_sign.size()));
     const Eigen::VectorXd q = y.head(n), qdot = y.tail(n);
     if (U > 0) contacts.events(t, q, qdot, std::span(g.data(), U));
     if (F > 0) friction.events(t, q, qdot, data, std::span(g.data() + U, F));
+    if (I > 0) impulses.events(t, std::span(g.data() + U + F, I));
     if (stop_sign.empty()) return;
     compiled.solve(t, q, qdot, parameters, qddot, lambda, data);
     compiled.observe(t, q, qdot, qddot, lambda, parameters, observed, data);
     for (std::size_t s = 0; s < stop_sign.size(); ++s) {
-      g[static_cast<Eigen::Index>(U + F + s)] = stop_sign[s] * observed[stops_begin + s];
+      g[static_cast<Eigen::Index>(UFI + s)] = stop_sign[s] * observed[stops_begin + s];
     }
   };
-  // An event: a contact made or lost, a rough contact sticking or slipping, or a stop.
+  // An event: a contact made or lost, a rough contact sticking or slipping, an impulse, or a stop.
   const auto on_event = [&](double t, Eigen::VectorXd& y, std::size_t which) {
     Eigen::VectorXd yq = y.head(n), yv = y.tail(n);
     if (which < U) {
@@ -478,9 +483,16 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     } else if (which < U + F) {
       std::string what = friction.handle(t, yq, yv, which - U, data);
       if (!what.empty()) summary.phases.push_back({t, std::move(what)});
+    } else if (which < UFI) {
+      // the rates jump; the rough contacts stick or slide from the new rates
+      summary.phases.push_back({t, impulses.apply(t, yq, yv, which - U - F, contacts.active())});
+      for (auto& line : friction.start(t, yq, yv, data)) {
+        summary.phases.push_back({t, std::move(line)});
+      }
+      y << yq, yv;
     } else {
       summary.phases.push_back(
-          {t, "stop_when '" + system.stop_when[which - U - F].name + "' reached 0"});
+          {t, "stop_when '" + system.stop_when[which - UFI].name + "' reached 0"});
       return false;
     }
     return true;
@@ -528,11 +540,11 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     y0 << q, qdot;
     IntegrationCallbacks callbacks;
     callbacks.output = emit;
-    if (U + F + stop_sign.size() > 0) {
+    if (UFI + stop_sign.size() > 0) {
       Eigen::VectorXd g0;
       events(start.t0, y0, g0);
       for (std::size_t s = 0; s < stop_sign.size(); ++s) {
-        const double value = g0[static_cast<Eigen::Index>(U + F + s)];
+        const double value = g0[static_cast<Eigen::Index>(UFI + s)];
         if (value == 0.0) {
           throw std::invalid_argument("stop_when '" + system.stop_when[s].name +
                                       "' is 0 at the start");

@@ -1,7 +1,7 @@
 // The YAML model reader.
 //
 // Sections, in the order they may refer to each other: parameters → coordinates → particles →
-// forces → constraints → initial → simulate → outputs → conserved.
+// forces → constraints → impulses → initial → simulate → outputs → conserved.
 #include "unidyn/io/model_file.hpp"
 
 #include <fstream>
@@ -73,7 +73,7 @@ System ModelReader::read(const YAML::Node& root) {
   expect_keys(root,
               {"unidyn", "name", "description", "reference", "parameters", "coordinates",
                "particles", "bodies", "forces", "constraints", "initial", "simulate", "outputs",
-               "conserved", "stop_when", "definitions"},
+               "conserved", "stop_when", "definitions", "impulses"},
               "the model");
   if (!root["unidyn"]) throw ModelError(at(root), "missing 'unidyn: 1' (the model format version)");
   if (scalar(root["unidyn"], "unidyn") != "1")
@@ -100,6 +100,7 @@ System ModelReader::read(const YAML::Node& root) {
   if (root["definitions"]) read_definitions(root["definitions"], system);
   if (root["forces"]) read_forces(root["forces"], system);
   if (root["constraints"]) read_constraints(root["constraints"], system);
+  if (root["impulses"]) read_impulses(root["impulses"], system);
   system.initial_values.assign(system.coordinates().size(), 0);
   system.initial_rates.assign(system.coordinates().size(), 0);
   system.initial_value_given.assign(system.coordinates().size(), false);

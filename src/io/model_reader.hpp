@@ -266,6 +266,7 @@ class ModelReader {
   std::vector<Output> read_outputs(const YAML::Node& node, const System& system,
                                    const std::string& what);
   void read_stop_when(const YAML::Node& node, System& system);
+  void read_impulses(const YAML::Node& node, System& system);
   // Checks with the parameters' values (model_checks.cpp).
   void expect_positive_mass(const YAML::Node& node, const Expr& mass, const System& system) const;
   void expect_realisable_inertia(const YAML::Node& node, const GiNaC::matrix& J,

@@ -60,6 +60,10 @@ EquationsOfMotion lagrange_equations(const System& system);
 // once M and the q̈-free part c_i of each row's inertia terms are known, the inertia terms
 // Σ_j M_ij q̈^j + c_i, f_i = Φ_i − ∂U/∂q^i − c_i and the constraint rows.
 std::vector<Expr> generalized_forces(const System& system);
+// One force element's Φ_i = Σ F · ∂r/∂q^i + Σ M · ∂ω/∂q̇^i, with each body's ω (angular_velocities).
+std::vector<Expr> element_generalized_forces(const System& system, const ForceElement& element,
+                                             const std::vector<VectorExpr>& omega);
+std::vector<VectorExpr> angular_velocities(const System& system);
 void constraint_rows(const System& system, EquationsOfMotion& eq);
 EquationsOfMotion energies_and_forces(const System& system);
 void finish_equations(const System& system, const std::vector<Expr>& convective,

@@ -68,7 +68,7 @@ struct SimulationSummary {
   double last_row_time = 0.0;
   // Why E = T + U is not a constant of the motion ("" when it is): "driven by t" (forces,
   // constraints or positions that depend on time), "dissipative: friction", "dissipative:
-  // impacts with restitution < 1" (joined by "; ").
+  // impacts with restitution < 1", "impulses applied" (joined by "; ").
   std::string energy_not_conserved;
   // max |E − E0| / max over the run of (T + |U|)
   double energy_relative_drift = 0.0;

@@ -195,6 +195,17 @@ struct InitialOmega {
   SourcePosition where;
 };
 
+// An impulse applied at a given time (book §9.8, the cue's strike; (11.13)–(11.15)): Î at a
+// particle, or at a material point of a body (`point` is where it acts, as a function of q). Its
+// generalised impulses Φ̂_i = Î · ∂r_P/∂q^i jump the momenta: [[∂T/∂q̇^i]] = Φ̂_i (11.15).
+struct AppliedImpulse {
+  std::string name;    // "impulse 1", … in the order of the model's list
+  Expr time;           // a number or an expression of the parameters
+  VectorExpr impulse;  // Î on E1, E2, E3 (may depend on q)
+  VectorExpr point;    // r_P(q, t)
+  SourcePosition where;
+};
+
 struct System {
   std::string name;
   std::string source;  // the model file
@@ -219,6 +230,8 @@ struct System {
   std::vector<Definition> definitions;
   // The run stops when one of these, non-zero at the start, reaches 0.
   std::vector<Output> stop_when;
+  // Impulses applied during the run, at their times.
+  std::vector<AppliedImpulse> impulses;
   // The model's expression with the largest power of a sum once expanded (largest_power_terms),
   // and where it is: named when an expansion of the derivation exceeds its budget.
   SourcePosition largest_expression;
