@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
@@ -78,7 +80,7 @@ TEST(Integrability, SetsOfConstraints) {
 // (10.27)–(10.28): the rolling disk's π3 = ẋ3 − R θ̇ cos θ is integrable (Ψ = x3 − R sin θ), π1 is
 // not, and neither is the set π1, π2, π3 (Ex. 8.9).
 TEST(Integrability, RollingDisk) {
-  const System s = parse_model(R"yaml(unidyn: 1
+  const std::string disk = R"yaml(unidyn: 1
 parameters: {R: 0.5}
 coordinates: [x1, x2, x3, psi, theta, phi]
 bodies:
@@ -91,31 +93,17 @@ constraints:
   - {name: pi1, velocity: "der(x1) + R*der(phi)*cos(psi) + R*der(psi)*cos(theta)*cos(psi) - R*der(theta)*sin(theta)*sin(psi)"}
   - {name: pi2, velocity: "der(x2) + R*der(phi)*sin(psi) + R*der(psi)*cos(theta)*sin(psi) + R*der(theta)*sin(theta)*cos(psi)"}
   - {name: pi3, velocity: "der(x3) - R*der(theta)*cos(theta)"}
-)yaml",
-                               "disk.yaml");
+)yaml";
+  const System s = parse_model(disk, "disk.yaml");
   EXPECT_FALSE(constraint_integrability(s, 0).integrable);
   EXPECT_FALSE(constraint_integrability(s, 1).integrable);
   EXPECT_TRUE(constraint_integrability(s, 2).integrable);
   EXPECT_FALSE(set_integrability(s, {0, 1, 2}).integrable);
   EXPECT_TRUE(set_integrability(s, {2}).integrable);
   // Ex. 8.9(d): with ẋ2 = 0 and ψ̇ = 0 as well the five leave one direction of motion: integrable
-  const System held = parse_model(R"yaml(unidyn: 1
-parameters: {R: 0.5}
-coordinates: [x1, x2, x3, psi, theta, phi]
-bodies:
-  disk:
-    mass: 1
-    inertia: [1, 1, 2]
-    rotation: {euler: 3-1-3, angles: [psi, theta, phi]}
-    center: [x1, x2, x3]
-constraints:
-  - {name: pi1, velocity: "der(x1) + R*der(phi)*cos(psi) + R*der(psi)*cos(theta)*cos(psi) - R*der(theta)*sin(theta)*sin(psi)"}
-  - {name: pi2, velocity: "der(x2) + R*der(phi)*sin(psi) + R*der(psi)*cos(theta)*sin(psi) + R*der(theta)*sin(theta)*cos(psi)"}
-  - {name: pi3, velocity: "der(x3) - R*der(theta)*cos(theta)"}
-  - {name: lane, velocity: der(x2)}
-  - {name: heading, velocity: der(psi)}
-)yaml",
-                                  "held.yaml");
+  const System held = parse_model(
+      disk + "  - {name: lane, velocity: der(x2)}\n  - {name: heading, velocity: der(psi)}\n",
+      "held.yaml");
   EXPECT_FALSE(set_integrability(held, {0, 1, 2}).integrable);
   EXPECT_TRUE(set_integrability(held, {0, 1, 2, 3, 4}).integrable);
 }

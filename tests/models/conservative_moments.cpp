@@ -84,16 +84,7 @@ TEST(ConservativeMoments, EnergyAndAngularMomentumKept) {
 // forces Φ_i = M E3 · g_i = (M, 0, M cos θ) fail the integrability condition ∂Φ_φ/∂θ = ∂Φ_θ/∂φ,
 // while the torsion spring's −K ψ g^1 passes all of them (it is −∂U/∂γ).
 TEST(ConservativeMoments, ZieglersConstantMomentHasNoPotential) {
-  const System system = parse_model(R"(unidyn: 1
-parameters: {M: 2, K: 3}
-coordinates: [psi, theta, phi]
-bodies:
-  B: {mass: 1, inertia: [1, 2, 3], rotation: {euler: 3-1-3, angles: [psi, theta, phi]}, center: [0, 0, 0]}
-forces:
-  - moment: {on: B, value: M*E3}
-  - torsion_spring: {on: B, angle: psi, stiffness: K}
-)",
-                                    "ziegler.yaml");
+  const System system = load_model(test::model_path("ziegler-moment"));
   const auto& q = system.coordinates();
   const VectorExpr omega = system.angular_velocity(0);
   // the curl ∂Φ_i/∂γ^j − ∂Φ_j/∂γ^i of each element's generalised forces

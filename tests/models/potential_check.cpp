@@ -53,17 +53,7 @@ TEST(PotentialCheck, FourForcesOfProblem21) {
 // ∂Φ_θ/∂φ − ∂Φ_φ/∂θ = M sin θ ≠ 0; the torsion spring's −K ψ g¹ has Φ = (−K ψ, 0, 0) and
 // U = ½ K ψ².
 TEST(PotentialCheck, ZieglersMomentAndTheTorsionSpring) {
-  const System system = parse_model(R"(unidyn: 1
-parameters: {M: 2, K: 3}
-coordinates: [psi, theta, phi]
-bodies:
-  B: {mass: 1, inertia: [1, 2, 3], rotation: {euler: 3-1-3, angles: [psi, theta, phi]}, center: [0, 0, 0]}
-forces:
-  - moment: {on: B, value: M*E3}
-  - torsion_spring: {on: B, angle: psi, stiffness: K}
-initial: {theta: 1}
-)",
-                                    "ziegler.yaml");
+  const System system = load_model(test::model_path("ziegler-moment"));
   const PotentialCheck ziegler = potential_check(system, 0), spring = potential_check(system, 1);
   const Expr M = system.parameters[0].symbol, K = system.parameters[1].symbol;
   const Expr psi = system.coordinates()[0].value, theta = system.coordinates()[1].value;
