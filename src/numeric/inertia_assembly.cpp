@@ -93,15 +93,13 @@ void InertiaAssembly::assemble(const double* values, double* M, double* c,
     v += term.rotation ? 9 : 1;
     // J's rows evaluated (a point's rows of zeros left out), then h's three components
     const double* J[3] = {nullptr, nullptr, nullptr};
-    const double* h_rows[3] = {nullptr, nullptr, nullptr};
     const std::size_t R = term.rows.size();
     for (std::size_t i = 0; i < R; ++i) {
       J[i] = v;
       v += k;
     }
-    for (std::size_t i = 0; i < R; ++i) h_rows[i] = v + term.rows[i];
-    double h[3];
-    for (std::size_t i = 0; i < R; ++i) h[i] = *h_rows[i];
+    double h[3] = {0.0, 0.0, 0.0};
+    for (std::size_t i = 0; i < R; ++i) h[i] = v[term.rows[i]];
     const double* K[3] = {J[0], J[1], J[2]};
     double weight = W[0];
     if (term.rotation) {

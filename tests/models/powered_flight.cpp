@@ -12,15 +12,13 @@ TEST(PoweredFlight, MagnusDoesNoWorkThrustAndDragDo) {
   const test::ModelRun run = test::run_model("powered-flight");
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
   ASSERT_EQ(run.rows.size() % 2, 1u);
-  double work = 0;
+  const std::vector<double> work = test::running_integral(run, "power");
   for (std::size_t i = 0; i < run.rows.size(); ++i) {
     EXPECT_NEAR(run.at(i, "magnus_power"), 0.0, 1e-13);
-    if (i < 2 || i % 2 == 1) continue;
-    const double h = run.at(i, "t") - run.at(i - 1, "t");
-    work += h / 3 * (run.at(i - 2, "power") + 4 * run.at(i - 1, "power") + run.at(i, "power"));
-    EXPECT_NEAR(run.at(i, "E") - run.at(0, "E"), work, 1e-8) << run.at(i, "t");
+    if (i % 2 == 1) continue;
+    EXPECT_NEAR(run.at(i, "E") - run.at(0, "E"), work[i], 1e-8) << run.at(i, "t");
   }
-  EXPECT_GT(std::abs(work), 1.0);
+  EXPECT_GT(std::abs(work.back()), 1.0);
 }
 
 }  // namespace

@@ -55,6 +55,20 @@ struct ModelRun {
   }
 };
 
+// The running integral of a column over the rows by Simpson's rule, two intervals at a time (the
+// rows equally spaced, as on an output grid without events): entry i is ∫ from the first row's t
+// to row i's for even i, NaN for odd i.
+inline std::vector<double> running_integral(const ModelRun& run, const std::string& column) {
+  std::vector<double> integral(run.rows.size(), std::nan(""));
+  if (!run.rows.empty()) integral[0] = 0;
+  for (std::size_t i = 2; i < run.rows.size(); i += 2) {
+    const double h = run.at(i, "t") - run.at(i - 1, "t");
+    integral[i] = integral[i - 2] +
+                  h / 3 * (run.at(i - 2, column) + 4 * run.at(i - 1, column) + run.at(i, column));
+  }
+  return integral;
+}
+
 // Simulates a system through the whole pipeline with NAME=VALUE overrides; `adjust` may change the
 // options (t_end, output_step, method, rtol) that the model file sets.
 // With `complete`, the values the start leaves out are computed from the constraints first, as
