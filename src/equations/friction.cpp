@@ -6,6 +6,43 @@
 #include "unidyn/kinematics/constraint_gradient.hpp"
 
 namespace unidyn {
+namespace {
+
+// The constraint named `name`, or an error naming the rough constraint `rough`.
+std::size_t constraint_named(const System& system, const std::string& name,
+                             const std::string& rough) {
+  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+    if (system.constraints[k].name == name) return k;
+  }
+  throw std::invalid_argument("friction on '" + rough + "': with: names no constraint " + name);
+}
+
+// The slip speed |v_t|: v_rel less its part along the normals (one: the surface's; two: off the
+// curve's tangent g1 × g2), written as a square root of a sum of squares.
+Expr slip_speed(const VectorExpr& relative, const std::vector<VectorExpr>& normals) {
+  if (normals.size() == 2) {
+    const VectorExpr tangent = cross(normals[0], normals[1]);
+    const Expr along = dot(relative, tangent);
+    return GiNaC::sqrt(along * along / dot(tangent, tangent));
+  }
+  const VectorExpr& g = normals.front();
+  const VectorExpr slip = relative - (dot(relative, g) / dot(g, g)) * g;
+  return GiNaC::sqrt(dot(slip, slip));
+}
+
+}  // namespace
+
+bool carries_friction(const System& system, std::size_t k) {
+  const Constraint& c = system.constraints[k];
+  if (c.friction) return true;
+  for (const Constraint& rough : system.constraints) {
+    if (!rough.friction) continue;
+    for (const std::string& name : rough.friction->with) {
+      if (name == c.name) return true;
+    }
+  }
+  return false;
+}
 
 std::vector<FrictionContact> friction_contacts(const System& system) {
   std::vector<FrictionContact> contacts;
@@ -16,30 +53,40 @@ std::vector<FrictionContact> friction_contacts(const System& system) {
   for (std::size_t k = 0; k < system.constraints.size(); ++k) {
     const Constraint& c = system.constraints[k];
     if (!c.friction) continue;
-    if (c.kind != Constraint::Kind::position) {
-      throw std::invalid_argument("friction on '" + c.name + "' needs a position constraint");
-    }
-    const ConstraintLoads loads = constraint_loads(system, k);
-    // the contact's velocity v_P and the normal g
-    VectorExpr v, g;
-    if (const auto p = system.find_particle(c.friction->on)) {
-      v = system.velocity(*p);
-      g = loads.particle_force[*p];
-    } else if (const auto b = system.find_body(c.friction->on)) {
-      v = system.center_velocity(*b) +
-          cross(system.angular_velocity(*b), c.friction->at - system.bodies[*b].center);
-      g = loads.body_force[*b];
-    } else {
-      throw std::invalid_argument("friction on '" + c.name + "': no particle or body " +
-                                  c.friction->on);
-    }
+    const Friction& friction = *c.friction;
     FrictionContact contact{
-        k, {}, {}, {}, g, c.friction->dynamic_coefficient, c.friction->static_coefficient};
+        {k}, {}, {}, {}, {}, 0, friction.static_coefficient, friction.viscous_coefficient};
+    for (const std::string& name : friction.with) {
+      contact.constraints.push_back(constraint_named(system, name, c.name));
+    }
+    // the contact's velocity v_P and each constraint's normal g_j on P
+    const auto p = system.find_particle(friction.on);
+    const auto b = system.find_body(friction.on);
+    if (!p && !b) {
+      throw std::invalid_argument("friction on '" + c.name + "': no particle or body " +
+                                  friction.on);
+    }
+    for (const std::size_t j : contact.constraints) {
+      if (system.constraints[j].kind != Constraint::Kind::position) {
+        throw std::invalid_argument("friction on '" + c.name + "' needs position constraints");
+      }
+      const ConstraintLoads loads = constraint_loads(system, j);
+      contact.normals.push_back(p ? loads.particle_force[*p] : loads.body_force[*b]);
+    }
+    const VectorExpr v =
+        p ? system.velocity(*p)
+          : system.center_velocity(*b) +
+                cross(system.angular_velocity(*b), friction.at - system.bodies[*b].center);
     for (const auto& q : system.coordinates()) contact.jacobian.push_back(diff(v, q.rate));
-    const VectorExpr relative = v - c.friction->surface_velocity;
+    const VectorExpr relative = v - friction.surface_velocity;
     contact.velocity_term = subs(relative, at_rest);
     // d/dt (v_P − v_surface) with q̈ = 0
     contact.acceleration_bias = subs(config.total_derivative(relative), no_acceleration);
+    contact.dynamic_coefficient = friction.dynamic_coefficient;
+    if (contact.dynamic_coefficient.has(slip_speed_symbol())) {
+      contact.dynamic_coefficient = contact.dynamic_coefficient.subs(
+          GiNaC::lst{slip_speed_symbol()}, GiNaC::lst{slip_speed(relative, contact.normals)});
+    }
     contacts.push_back(std::move(contact));
   }
   return contacts;

@@ -2,6 +2,8 @@
 #include "unidyn/equations/reduction.hpp"
 
 #include <optional>
+
+#include "unidyn/equations/friction.hpp"
 #include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 
@@ -52,7 +54,7 @@ Reduction eliminate_constraints(const System& full) {
       const Constraint& constraint = system.constraints[c];
       // (§3.8) friction needs the normal force, and a unilateral contact may let go: both keep
       // their multipliers
-      if (constraint.kind != Constraint::Kind::position || constraint.friction ||
+      if (constraint.kind != Constraint::Kind::position || carries_friction(system, c) ||
           constraint.unilateral) {
         continue;
       }
@@ -94,6 +96,7 @@ Reduction eliminate_constraints(const System& full) {
         if (other.friction) {
           other.friction->dynamic_coefficient = other.friction->dynamic_coefficient.subs(map);
           other.friction->static_coefficient = other.friction->static_coefficient.subs(map);
+          other.friction->viscous_coefficient = other.friction->viscous_coefficient.subs(map);
           other.friction->at = subs(other.friction->at, map);
           other.friction->surface_velocity = subs(other.friction->surface_velocity, map);
         }
@@ -121,11 +124,13 @@ Reduction eliminate_constraints(const System& full) {
       break;
     }
   }
-  for (const auto& c : system.constraints) {
+  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+    const Constraint& c = system.constraints[k];
     result.notes.push_back(
         "kept constraint " + c.name +
         (c.kind == Constraint::Kind::velocity ? ": a velocity constraint (Routh–Voss, (3.8))"
-         : c.friction   ? ": its friction needs its normal force, which approach II does not give"
+         : carries_friction(system, k)
+             ? ": its friction needs its normal force, which approach II does not give"
          : c.unilateral ? ": it is unilateral, and its contact may be lost"
                         : ": it is not linear in a coordinate with a constant coefficient"));
   }

@@ -17,10 +17,13 @@ FrictionPhases::FrictionPhases(const System& system, const CompiledSystem& compi
 
 std::pair<double, double> FrictionPhases::tangential_and_normal(
     std::size_t c, const CompiledSystemData& data) const {
-  const Eigen::Vector3d n = data.friction[c].normal.normalized();
   const Eigen::Vector3d& R = data.contact_force[c];
-  const double normal = R.dot(n);
-  return {(R - normal * n).norm(), std::abs(normal)};
+  return {data.friction[c].tangential_part(R).norm(), data.friction[c].normal_part(R).norm()};
+}
+
+Eigen::Vector3d FrictionPhases::against_holding_force(std::size_t c,
+                                                      const CompiledSystemData& data) const {
+  return -data.friction[c].tangential_part(data.contact_force[c]).normalized();
 }
 
 std::vector<std::string> FrictionPhases::start(double t, const Eigen::VectorXd& q,
@@ -33,7 +36,8 @@ std::vector<std::string> FrictionPhases::start(double t, const Eigen::VectorXd& 
     const std::string name =
         "'" + system_.constraints[compiled_.friction_constraints()[c]].name + "'";
     if (slipping(f)) {
-      data.friction_phase[c] = {false, f.slip.normalized(), 1.0};
+      data.friction_phase[c].stick = false;
+      data.friction_phase[c].direction = f.slip.normalized();
       lines.push_back(name + " slides");
     } else {
       lines.push_back(stick_or_slide(t, q, qdot, c, data));
@@ -67,9 +71,8 @@ std::string FrictionPhases::handle(double t, const Eigen::VectorXd& q, const Eig
     // the static bound is exceeded: slide along −R_t
     Eigen::VectorXd qddot, lambda;
     compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data);
-    const Eigen::Vector3d n = data.friction[which].normal.normalized();
-    const Eigen::Vector3d& R = data.contact_force[which];
-    phase = {false, -(R - R.dot(n) * n).normalized(), phase.sign};
+    phase.stick = false;
+    phase.direction = against_holding_force(which, data);
     return "contact " + name + " slips (static friction exceeded)";
   }
   if (slipping(data.friction[which])) {
@@ -92,9 +95,8 @@ std::string FrictionPhases::stick_or_slide(double t, const Eigen::VectorXd& q,
   if (tangential <= data.friction[c].static_coefficient * normal) {
     return "contact " + name + " sticks";
   }
-  const Eigen::Vector3d n = data.friction[c].normal.normalized();
-  const Eigen::Vector3d& R = data.contact_force[c];
-  phase = {false, -(R - R.dot(n) * n).normalized(), phase.sign};
+  phase.stick = false;
+  phase.direction = against_holding_force(c, data);
   return "contact " + name + " slides on (static friction too weak to hold it)";
 }
 

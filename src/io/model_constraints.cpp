@@ -41,6 +41,7 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
   if (!node.IsSequence()) fail(node, "constraints must be a list");
   const SystemScope scope(system);
   std::set<std::string> names;
+  std::vector<std::pair<std::size_t, YAML::Node>> rough;  // each rough constraint's friction:
   for (const auto& spec : node) {
     expect_map(spec, "a constraint");
     expect_keys(spec,
@@ -128,55 +129,12 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
       }
     }
     if (spec["friction"]) {
-      const YAML::Node& f = spec["friction"];
-      expect_map(f, "friction");
-      expect_keys(f, {"on", "at", "dynamic", "static", "surface_velocity"}, "friction");
-      if (!f["on"] || !f["dynamic"]) {
-        fail(f,
-             "friction needs on: (a particle, or a body with at: its point of contact) and "
-             "dynamic:");
-      }
-      if (c.kind != Constraint::Kind::position) {
-        fail(f, "friction acts at the contact of a position constraint (a surface or curve)");
-      }
-      Friction friction{scalar(f["on"], "on"), scalar_expr(f["dynamic"], scope, "dynamic"), 0,
-                        VectorExpr{}, VectorExpr{}};
-      expect_state_only(f["dynamic"], friction.dynamic_coefficient, system, "a coefficient");
-      friction.static_coefficient =
-          f["static"] ? scalar_expr(f["static"], scope, "static") : friction.dynamic_coefficient;
-      expect_state_only(f["static"] ? f["static"] : f, friction.static_coefficient, system,
-                        "a coefficient");
-      if (f["surface_velocity"]) {
-        friction.surface_velocity = vector_expr(f["surface_velocity"], scope, "surface_velocity");
-        expect_state_only(f["surface_velocity"], friction.surface_velocity, system,
-                          "a surface velocity");
-      }
-      const bool body = system.find_body(friction.on).has_value();
-      if (!system.find_particle(friction.on) && !body) {
-        fail(f["on"], "on: must name a particle or a body");
-      }
-      if (body != static_cast<bool>(f["at"])) {
-        fail(f, body ? "friction on a body needs at: its point of contact, e.g. \"B.center - R*E3\""
-                     : "at: is for a body's point of contact; a particle is its own");
-      }
-      if (body) {
-        friction.at = vector_expr(f["at"], scope, "at");
-        expect_state_only(f["at"], friction.at, system, "a point of contact");
-      }
-      c.friction = friction;
+      c.friction = read_friction(spec["friction"], c, system);
+      rough.emplace_back(system.constraints.size(), spec["friction"]);
     }
     system.constraints.push_back(std::move(c));
   }
-  // a rough contact needs its normal ∂Ψ/∂r_P, which needs the coordinates to fix the positions
-  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
-    if (!system.constraints[k].friction) continue;
-    try {
-      constraint_loads(system, k);
-    } catch (const std::invalid_argument& e) {
-      throw ModelError(system.constraints[k].where,
-                       "friction on '" + system.constraints[k].name + "': " + e.what());
-    }
-  }
+  check_friction(rough, system);
 }
 
 // ball: {body: A, point: [X on A], to: B, to_point: [X on B]} — or, without to:, a fixed point

@@ -257,6 +257,11 @@ class ModelReader {
       const YAML::Node& spec, const System& system, const std::string& what,
       const std::string& required, const std::set<std::string>& optional = {});
   void read_constraints(const YAML::Node& node, System& system);
+  Friction read_friction(const YAML::Node& f, const Constraint& c, const System& system);
+  // The with: of each rough constraint (index, its friction: node) names other position
+  // constraints, each in one contact, and each normal can be found.
+  void check_friction(const std::vector<std::pair<std::size_t, YAML::Node>>& rough,
+                      const System& system) const;
   void read_joint(const YAML::Node& spec, const std::string& name, System& system);
   void read_rolling(const YAML::Node& spec, const std::string& name, System& system);
   void read_initial(const YAML::Node& node, System& system);

@@ -16,6 +16,11 @@ std::optional<std::size_t> find_by_name(const std::vector<T>& items, const std::
 
 }  // namespace
 
+const GiNaC::realsymbol& slip_speed_symbol() {
+  static const GiNaC::realsymbol slip_speed("slip_speed");
+  return slip_speed;
+}
+
 bool is_integration_method(std::string_view name) {
   for (const std::string_view known : integration_method_names) {
     if (name == known) return true;

@@ -98,18 +98,22 @@ Tape compile_observer(const System& system, const EquationsOfMotion& eq) {
   return Tape::compile(outputs, tape_inputs(system, true));
 }
 
-// Per rough contact: J (3 × n, row-major), e, the acceleration bias, g, μ_d, μ_s.
+// Per rough contact: J (3 × n, row-major), e, the acceleration bias, the g_j, μ_d, μ_s, c.
 Tape compile_friction(const System& system, const std::vector<FrictionContact>& contacts) {
   std::vector<Expr> outputs;
+  const auto push = [&](const VectorExpr& v) {
+    for (int k = 0; k < 3; ++k) outputs.push_back(v[k]);
+  };
   for (const auto& c : contacts) {
     for (int k = 0; k < 3; ++k) {
       for (const auto& column : c.jacobian) outputs.push_back(column[k]);
     }
-    for (const VectorExpr* v : {&c.velocity_term, &c.acceleration_bias, &c.normal}) {
-      for (int k = 0; k < 3; ++k) outputs.push_back((*v)[k]);
-    }
+    push(c.velocity_term);
+    push(c.acceleration_bias);
+    for (const VectorExpr& g : c.normals) push(g);
     outputs.push_back(c.dynamic_coefficient);
     outputs.push_back(c.static_coefficient);
+    outputs.push_back(c.viscous_coefficient);
   }
   return Tape::compile(outputs, tape_inputs(system, false));
 }
@@ -180,7 +184,10 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
   }
   const std::vector<FrictionContact> contacts = friction_contacts(system);
   friction_ = compile_friction(system, contacts);
-  for (const auto& c : contacts) friction_constraint_.push_back(c.constraint);
+  for (const auto& c : contacts) {
+    friction_constraint_.push_back(c.constraints.front());
+    friction_rows_.push_back(c.constraints);
+  }
   observation_names_ = {"kinetic_energy", "potential_energy"};
   for (const auto& o : system.outputs) observation_names_.push_back(o.name);
   for (const auto& o : system.conserved) observation_names_.push_back(o.name);

@@ -672,6 +672,44 @@ TEST(ModelFileErrors, Constraints) {
   expect_error(constraint(no_dynamic), 7, column_of(no_dynamic, "{on"), {"dynamic:"});
 }
 
+// Friction on a curve: with: names other position constraints, each in one contact; slip_speed
+// belongs to the dynamic coefficient alone.
+TEST(ModelFileErrors, FrictionOnACurve) {
+  const auto constraints = [](const std::string& rough, const std::string& other) {
+    return base() + "constraints:\n" + rough + "\n" + other + "\n";
+  };
+  const std::string plane = "  - {name: d, position: x - 1}";
+  const auto rough = [](const std::string& with) {
+    return "  - {name: c, position: y, friction: {on: P, dynamic: 0.1, with: " + with + "}}";
+  };
+  expect_error(constraints(rough("[e]"), plane), 7, column_of(rough("[e]"), "e]"),
+               {"with: names no constraint 'e'"});
+  expect_error(constraints(rough("[c]"), plane), 7, column_of(rough("[c]"), "c]"),
+               {"the rough constraint itself"});
+  expect_error(constraints(rough("d"), plane), 7, column_of(rough("d"), "d}"), {"a list"});
+  const std::string rate = "  - {name: d, velocity: der(x)}";
+  expect_error(constraints(rough("[d]"), rate), 7, column_of(rough("[d]"), "d]"),
+               {"not a position constraint"});
+  const std::string rough_too = "  - {name: d, position: x - 1, friction: {on: P, dynamic: 0.1}}";
+  expect_error(constraints(rough("[d]"), rough_too), 7, column_of(rough("[d]"), "d]"),
+               {"friction of its own"});
+  const std::string twice =
+      "  - {name: e, position: x, friction: {on: P, dynamic: 0.1, with: [d]}}";
+  expect_error(base() + "constraints:\n" + rough("[d]") + "\n" + plane + "\n" + twice + "\n", 9,
+               column_of(twice, "d]"), {"already in the with:"});
+  EXPECT_NO_THROW(parse_model(constraints(rough("[d]"), plane), "test.yaml"));
+  // slip_speed: in dynamic:, not in static:
+  const std::string slip =
+      "  - {name: c, position: y, friction: {on: P, dynamic: 0.1 + 0.2*slip_speed}}";
+  const System s = parse_model(base() + "constraints:\n" + slip + "\n", "test.yaml");
+  EXPECT_NEAR(value_at(s, s.constraints[0].friction->static_coefficient), 0.1, 1e-15)
+      << "μ_s defaults to μ_d at no slip";
+  const std::string slip_static =
+      "  - {name: c, position: y, friction: {on: P, dynamic: 0.1, static: 0.2*slip_speed}}";
+  expect_error(base() + "constraints:\n" + slip_static + "\n", 7, column_of(slip_static, "0.2*"),
+               {"slip_speed belongs in dynamic:"});
+}
+
 // initial: only coordinates and their rates, with values in the parameters only.
 TEST(ModelFileErrors, InitialValues) {
   expect_error(base() + "initial: {z: 1}\n", 6, 11, {"'z' is not a coordinate"});

@@ -43,6 +43,8 @@ class FrictionPhases {
   // |R_t| and |N| of contact c from the last solve
   std::pair<double, double> tangential_and_normal(std::size_t c,
                                                   const CompiledSystemData& data) const;
+  // −R_t/|R_t|: the way contact c slides when its static friction cannot hold it
+  Eigen::Vector3d against_holding_force(std::size_t c, const CompiledSystemData& data) const;
 
   const System& system_;
   const CompiledSystem& compiled_;

@@ -110,14 +110,22 @@ struct ForceElement {
 
 // Coulomb friction at a constraint's contact with particle or body `on` (equations/friction.hpp),
 // a body touching at the point `at` (e.g. its centre − R E3 for a ball on a table); the surface
-// moves at `surface_velocity` there (0 for a fixed one).
+// moves at `surface_velocity` there (0 for a fixed one). On a curve the point is held by this
+// constraint and those named in `with` (§2.6, §3.8): the normal force is all of theirs together.
+// The dynamic coefficient may depend on the slip speed (slip_speed_symbol(); Ex. 9.13's
+// μ_k + μ_v |v_P|); a viscous coefficient c adds −c v_t.
 struct Friction {
   std::string on;
   Expr dynamic_coefficient;
   Expr static_coefficient;
   VectorExpr surface_velocity;
   VectorExpr at;
+  std::vector<std::string> with;
+  Expr viscous_coefficient = 0;
 };
+
+// The slip speed |v_t| inside a dynamic coefficient of friction (`slip_speed` in a model).
+const GiNaC::realsymbol& slip_speed_symbol();
 
 // (8.22) The Lagrange representation of a constraint's load on a body: with the constraint's
 // velocity form Σ_B (f_B · v̄_B + h_B · ω_B) + e = 0, it exerts F_c = λ f_B and M_c = λ h_B (about

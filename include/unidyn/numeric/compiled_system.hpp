@@ -28,17 +28,28 @@ struct FrictionPhase {
   bool stick = false;
   // The slip direction to use while the slip velocity is too small to give one.
   Eigen::Vector3d direction = Eigen::Vector3d::Zero();
-  // The sign of the normal multiplier λ (|λ| = sign λ keeps the solve linear).
-  double sign = 1.0;
+  // The direction N̂ of the normal force found by the last solve (|N| = N̂ · N keeps the solve
+  // linear); zero before the first.
+  Eigen::Vector3d normal_direction = Eigen::Vector3d::Zero();
 };
 
-// A rough contact's numbers at a state: J (3 × n), e, the acceleration bias, g, μ_d, μ_s.
+// A rough contact's numbers at a state: J (3 × n), e, the acceleration bias, the normals g_j (one
+// column per constraint), μ_d (at the slip speed), μ_s, the viscous c.
 struct FrictionValues {
   Eigen::MatrixXd jacobian;
-  Eigen::Vector3d velocity_term, acceleration_bias, normal;
-  double dynamic = 0.0, static_coefficient = 0.0;
-  // v_rel = J q̇ + e and its tangential part
+  Eigen::Vector3d velocity_term, acceleration_bias;
+  Eigen::Matrix3Xd normals;
+  double dynamic = 0.0, static_coefficient = 0.0, viscous = 0.0;
+  // An orthonormal basis of the normals' span, and one of the tangents off it (two on a surface,
+  // one on a curve)
+  Eigen::Matrix3Xd normal_basis, tangents;
+  // v_rel = J q̇ + e and its tangential part (the slip)
   Eigen::Vector3d relative_velocity, slip;
+  // The part of a vector along the normals, and off them
+  Eigen::Vector3d normal_part(const Eigen::Vector3d& v) const {
+    return normal_basis * (normal_basis.transpose() * v);
+  }
+  Eigen::Vector3d tangential_part(const Eigen::Vector3d& v) const { return v - normal_part(v); }
 };
 
 // The mutable side: registers and matrices one evaluation needs (one per thread).
@@ -121,8 +132,12 @@ class CompiledSystem {
   const std::vector<std::string>& observation_names() const { return observation_names_; }
   // Which constraints are position constraints (the others are velocity constraints).
   const std::vector<bool>& is_position_constraint() const { return is_position_; }
-  // The constraint of each rough contact.
+  // The rough constraint of each rough contact, and all the constraints that hold its point (the
+  // rough one first, then those of its `with:`).
   const std::vector<std::size_t>& friction_constraints() const { return friction_constraint_; }
+  const std::vector<std::vector<std::size_t>>& friction_contact_constraints() const {
+    return friction_rows_;
+  }
 
   // The tapes of inputs [t, q, q̇, p] (tape_inputs): the dynamics → M (row by row), f, A (row by
   // row), b; the constraints → A, e (A q̇ + e = 0), Ψ (position constraints; 0 for the others).
@@ -188,8 +203,9 @@ class CompiledSystem {
   std::shared_ptr<DeferredTape> full_dynamics_;
   Tape constraints_;  // [t, q, q̇, p] → A, e, Ψ
   Tape observer_;     // [t, q, q̇, q̈, λ, p] → T, U, outputs, conserved, stop_when
-  Tape friction_;     // [t, q, q̇, p] → per rough contact J, e, bias, g, μ_d, μ_s
+  Tape friction_;     // [t, q, q̇, p] → per rough contact J, e, bias, the g_j, μ_d, μ_s, c
   std::vector<std::size_t> friction_constraint_;
+  std::vector<std::vector<std::size_t>> friction_rows_;
   std::vector<std::string> observation_names_;
   std::vector<bool> is_position_;
   // Some coordinates are redundant (Euler parameters): M is semi-definite, whatever round-off
