@@ -6,9 +6,11 @@
 
 #include <cmath>
 #include <functional>
+#include <numbers>
 #include <string>
 
 #include "support/model_run.hpp"
+#include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
 namespace {
@@ -69,6 +71,54 @@ TEST(RoughCircle, StopsWhenTheQuadratureSaysAndTheFrictionIsTheBooks) {
       EXPECT_NEAR(run.at(i, "friction"), 0, 1e-9) << t;
     }
   }
+}
+
+// A circle in a vertical plane, gravity −g E2 in it: λ2 = 0, λ1 = m g sin θ − m L θ̇², so the
+// normal force changes sign as the bead passes the top, and
+// θ̈ = −(g/L) cos θ − μ_d |g sin θ − L θ̇²| sgn θ̇ / L (by RK4 here, with a step of 1e-5 s, on
+// the output grid, up to before the bead first stops).
+TEST(RoughCircle, NormalForceChangingSignOnAVerticalCircle) {
+  const std::string text =
+      "unidyn: 1\n"
+      "parameters: {m: 0.2, g: 9.81, L: 0.5, mu_d: 0.2}\n"
+      "coordinates: [r, theta, z]\n"
+      "particles:\n"
+      "  P: {mass: m, position: [r*cos(theta), r*sin(theta), z]}\n"
+      "forces:\n"
+      "  - gravity: -g*E2\n"
+      "constraints:\n"
+      "  - {name: ring, position: r - L, friction: {on: P, dynamic: mu_d, with: [plane]}}\n"
+      "  - {name: plane, position: z}\n"
+      "initial: {r: L, z: 0, theta: -1.5707963267948966, der(theta): 12}\n"
+      "simulate: {t_end: 0.5, output_step: 0.01, rtol: 1e-11}\n";
+  const ModelRun full = test::run_system(parse_model(text, "vertical-circle.yaml"));
+  ASSERT_TRUE(full.summary.ok) << full.summary.message;
+  const ModelRun run = full.on_grid(0.01);
+  const double g = 9.81, L = 0.5, mu = 0.2, h = 1e-5;
+  const auto rate = [&](double theta, double w) {
+    return -g / L * std::cos(theta) -
+           mu * std::abs(g * std::sin(theta) - L * w * w) * (w > 0 ? 1 : -1) / L;
+  };
+  double theta = -std::numbers::pi / 2, w = 12, t = 0;
+  bool flipped = false;
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    // RK4 of (θ, θ̇) up to the row's time
+    while (t < run.at(i, "t") - h / 2) {
+      const double k1t = w, k1w = rate(theta, w);
+      const double k2t = w + h / 2 * k1w, k2w = rate(theta + h / 2 * k1t, w + h / 2 * k1w);
+      const double k3t = w + h / 2 * k2w, k3w = rate(theta + h / 2 * k2t, w + h / 2 * k2w);
+      const double k4t = w + h * k3w, k4w = rate(theta + h * k3t, w + h * k3w);
+      theta += h / 6 * (k1t + 2 * k2t + 2 * k3t + k4t);
+      w += h / 6 * (k1w + 2 * k2w + 2 * k3w + k4w);
+      t += h;
+    }
+    EXPECT_NEAR(run.at(i, "theta"), theta, 1e-7) << t;
+    EXPECT_NEAR(run.at(i, "der(theta)"), w, 1e-6) << t;
+    const double lambda = run.at(i, "lambda(ring)");
+    EXPECT_NEAR(lambda, 0.2 * (g * std::sin(theta) - L * w * w), 1e-6) << t;
+    flipped = flipped || lambda > 0;
+  }
+  EXPECT_TRUE(flipped) << "the normal force must change sign for this test to mean anything";
 }
 
 struct Helix {
