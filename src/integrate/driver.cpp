@@ -132,11 +132,11 @@ IntegrationResult integrate(Stepper& stepper, double t0, const Eigen::VectorXd& 
           }
           hooked = stepper.dense(event->t);
           if (callbacks.post_step) callbacks.post_step(event->t, hooked);
-          const bool go_on = callbacks.on_event(event->t, hooked, event->which);
+          const AfterEvent after = callbacks.on_event(event->t, hooked, event->which);
           // the event's own row, with the state the integration goes on from
-          emit(event->t, hooked);
+          if (after != AfterEvent::restart_quietly) emit(event->t, hooked);
           stepper.restart_at(event->t, hooked);
-          if (!go_on) {
+          if (after == AfterEvent::stop) {
             result.stopped = true;
             break;
           }

@@ -56,7 +56,10 @@ void FrictionPhases::events(double t, const Eigen::VectorXd& q, const Eigen::Vec
       const auto [tangential, normal] = tangential_and_normal(c, data);
       g[c] = data.friction[c].static_coefficient * normal - tangential;
     } else {
-      g[c] = data.friction[c].slip.dot(phase.direction);
+      // ĉ · v_t − |v_t|/2: zero when the slip stops, or has turned by 60° (re-armed then, while
+      // the friction still follows the slip itself: past 90° it would keep ĉ)
+      const Eigen::Vector3d& slip = data.friction[c].slip;
+      g[c] = slip.dot(phase.direction) - 0.5 * slip.norm();
     }
   }
 }

@@ -481,8 +481,11 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
       use_phase();
       y << yq, yv;
     } else if (which < U + F) {
+      // a slip that only turned re-arms its event: a new start (the steps past it assumed the
+      // old direction), without a row of its own
       std::string what = friction.handle(t, yq, yv, which - U, data);
-      if (!what.empty()) summary.phases.push_back({t, std::move(what)});
+      if (what.empty()) return AfterEvent::restart_quietly;
+      summary.phases.push_back({t, std::move(what)});
     } else if (which < UFI) {
       // the rates jump; the rough contacts stick or slide from the new rates
       summary.phases.push_back({t, impulses.apply(t, yq, yv, which - U - F, contacts.active())});
@@ -493,9 +496,9 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     } else {
       summary.phases.push_back(
           {t, "stop_when '" + system.stop_when[which - UFI].name + "' reached 0"});
-      return false;
+      return AfterEvent::stop;
     }
-    return true;
+    return AfterEvent::restart;
   };
 
   // Integrate with the projection after every step; rows come through `emit`.

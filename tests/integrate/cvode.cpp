@@ -117,11 +117,11 @@ TEST(Cvode, DriverLocatesEvents) {
     g.resize(1);
     g[0] = y[0];
   };
-  callbacks.on_event = [&crossings](double t, Eigen::VectorXd& y, std::size_t) {
+  callbacks.on_event = [&crossings](double t, Eigen::VectorXd& y, std::size_t) -> AfterEvent {
     crossings.push_back(t);
     y[0] = -y[0];  // reflect: x stays ≥ 0 (an impact with restitution 1)
     y[1] = -y[1];
-    return true;
+    return AfterEvent::restart;
   };
   const IntegrationResult result =
       integrate(stepper, 0.0, vector({1.0, 0.0}), 10.0, 0.1, callbacks);

@@ -233,13 +233,13 @@ void expect_bouncing_ball_impact_times(Stepper& stepper) {
     values.resize(1);
     values[0] = y[0];
   };
-  callbacks.on_event = [&](double t, Eigen::VectorXd& y, std::size_t which) {
+  callbacks.on_event = [&](double t, Eigen::VectorXd& y, std::size_t which) -> AfterEvent {
     EXPECT_EQ(which, 0u);
     impacts.push_back(t);
     y[0] = 0.0;
     y[1] = -e * y[1];
     speeds_after.push_back(y[1]);
-    return true;
+    return AfterEvent::restart;
   };
   const IntegrationResult result = integrate(stepper, 0.0, vector({h, 0.0}), 3.0, 0.01, callbacks);
   ASSERT_TRUE(result.ok) << result.message;
@@ -298,10 +298,10 @@ TEST(DriverEvents, StopEventEndsTheRunWhereItIsLocated) {
     values << y[0], 2.0 + y[1];  // the second never reaches 0
   };
   double when = 0;
-  callbacks.on_event = [&](double t, Eigen::VectorXd&, std::size_t which) {
+  callbacks.on_event = [&](double t, Eigen::VectorXd&, std::size_t which) -> AfterEvent {
     EXPECT_EQ(which, 0u);
     when = t;
-    return false;
+    return AfterEvent::stop;
   };
   const IntegrationResult result =
       integrate(stepper, 0.0, vector({1.0, 0.0}), 10.0, 0.1, callbacks);

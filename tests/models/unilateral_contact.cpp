@@ -88,7 +88,7 @@ TEST(UnilateralContact, ParticleLeavesARoughSphere) {
   };
   callbacks.on_event = [&t1](double t, Eigen::VectorXd&, std::size_t) {
     t1 = t;
-    return false;
+    return AfterEvent::stop;
   };
   Eigen::VectorXd y0(2);
   y0 << phi0, w0 / R0;

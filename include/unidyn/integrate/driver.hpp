@@ -12,6 +12,13 @@
 
 namespace unidyn {
 
+// What the integration does after an event's handler.
+enum class AfterEvent {
+  restart,          // the event's row, then a new start from the state the handler left
+  restart_quietly,  // a new start, without a row: only the event functions' arming changed
+  stop,             // the event's row, and the run ends there (successfully)
+};
+
 struct IntegrationCallbacks {
   // One output row (t, y); called in order of t.
   std::function<void(double t, const Eigen::VectorXd& y)> output;
@@ -22,11 +29,12 @@ struct IntegrationCallbacks {
   // within a step: it is located on the dense output to within kEventTimeTolerance (the time
   // returned is on the ≤ 0 side), rows up to it are emitted, and on_event gets the state there,
   // which it may change (a new phase, an impulse); the event's own row follows, at its time (on
-  // the grid or between two grid times) with the state on_event left; integration then restarts
-  // from it, or stops there when on_event returns false. Just after its event a g_i counts as
-  // positive, so that any return to ≤ 0, however brief the excursion, is the next event.
+  // the grid or between two grid times) with the state on_event left, unless on_event says it
+  // changed nothing worth one (AfterEvent); integration then restarts from it, or stops there.
+  // Just after its event a g_i counts as positive, so that any return to ≤ 0, however brief the
+  // excursion, is the next event.
   std::function<void(double t, const Eigen::VectorXd& y, Eigen::VectorXd& g)> events;
-  std::function<bool(double t, Eigen::VectorXd& y, std::size_t which)> on_event;
+  std::function<AfterEvent(double t, Eigen::VectorXd& y, std::size_t which)> on_event;
 };
 
 // Events are located to this relative accuracy in time (of max(1, |t|)).

@@ -1,9 +1,10 @@
 // Stick and slip of the rough contacts (book §2.11, (2.27)–(2.30); §5.6): each slides or sticks,
 // and events switch it.
-//   sliding: the event is the slip velocity's component along the direction it had when the phase
-//            began reaching 0 — the slip stopped (1-D: it would reverse) or turned; then the
+//   sliding: the event is ĉ · v_t − |v_t|/2 reaching 0, ĉ the slip's direction when the phase
+//            began or was last re-armed: the slip stopped (1-D: it would reverse) — then the
 //            contact sticks if the force that holds it is inside the static cone |R_t| ≤ μ_s |N|,
-//            and slides on along −R_t otherwise;
+//            and slides on along −R_t otherwise — or it turned by 60°, which re-arms ĉ (a new
+//            start without a row, before the friction would fall back on ĉ at 90°);
 //   sticking: the event is μ_s |N| − |R_t| reaching 0; the contact then slides along −R_t.
 #pragma once
 
