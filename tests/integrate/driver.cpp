@@ -314,5 +314,34 @@ TEST(DriverEvents, StopEventEndsTheRunWhereItIsLocated) {
   EXPECT_NEAR(rows.back().y[0], 0.0, 1e-12);
 }
 
+// A quiet event re-arms without a row: x = cos t, the event x · s ≤ 0 with s flipped at each
+// crossing (π/2 + kπ) — five of them before t = 15 — and only the grid's rows come out.
+TEST(DriverEvents, QuietEventsRestartWithoutARow) {
+  DormandPrince54 stepper(test::oscillator(1.0), tolerances(1e-12, 1e-14));
+  std::vector<Row> rows;
+  IntegrationCallbacks callbacks = recorder(rows);
+  double sign = 1.0;
+  callbacks.events = [&](double, const Eigen::VectorXd& y, Eigen::VectorXd& values) {
+    values.resize(1);
+    values[0] = sign * y[0];
+  };
+  std::vector<double> crossings;
+  callbacks.on_event = [&](double t, Eigen::VectorXd&, std::size_t) -> AfterEvent {
+    crossings.push_back(t);
+    sign = -sign;
+    return AfterEvent::restart_quietly;
+  };
+  const IntegrationResult result =
+      integrate(stepper, 0.0, vector({1.0, 0.0}), 15.0, 0.5, callbacks);
+  ASSERT_TRUE(result.ok) << result.message;
+  ASSERT_EQ(crossings.size(), 5u);
+  for (std::size_t k = 0; k < crossings.size(); ++k) {
+    EXPECT_NEAR(crossings[k], std::acos(0.0) * double(2 * k + 1), 1e-10);
+  }
+  EXPECT_EQ(result.event_rows, 0u);
+  ASSERT_EQ(rows.size(), 31u);  // 0, 0.5, …, 15
+  for (const Row& r : rows) EXPECT_NEAR(r.y[0], std::cos(r.t), 1e-9) << r.t;
+}
+
 }  // namespace
 }  // namespace unidyn
