@@ -123,6 +123,53 @@ TEST(RollingSphere, SlidingCentreOnAParabolaOfFigure99) {
   EXPECT_GT(sliding, 10u);
 }
 
+// (9.28) on a plane inclined at β: the slip speed u and its angle χ (v_P = u (cos χ E1 + sin χ E2))
+// obey u̇ = −(7/2) μ_d g cos β + g sin β cos χ, u χ̇ = −g sin β sin χ — integrated here by RK4 from
+// the run's start, steps of at most 1e-5 s — until the sphere rolls where u reaches 0. ⚠ The book
+// prints u̇ without cos β; that equation misses the run's slip speed by far more than the
+// integration's error.
+TEST(RollingSphere, SlidingOnAnInclineFollowsEquation928) {
+  const double g = 9.81, mu = 0.2, beta = 0.25, h_max = 1e-5;
+  const test::ModelRun run =
+      test::run_model("sphere-slide-roll", {{"beta", beta}, {"der(x1)", 1.0}, {"der(x2)", 1.5}});
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  ASSERT_EQ(run.summary.phases.size(), 2u);
+  const double rolls = run.summary.phases[1].t;
+  // RK4 of (u, χ) with the friction's normal m g cos β, or the printed m g
+  const auto integrate = [&](double normal_factor, double until) {
+    double u = std::hypot(1.0, 1.5), chi = std::atan2(1.5, 1.0);
+    const auto rate = [&](double uu, double cc) {
+      return std::pair{-3.5 * mu * g * normal_factor + g * std::sin(beta) * std::cos(cc),
+                       -g * std::sin(beta) * std::sin(cc) / uu};
+    };
+    const int steps = std::max(1, int(std::ceil(until / h_max)));
+    const double h = until / steps;
+    for (int k = 0; k < steps; ++k) {
+      const auto [a1, b1] = rate(u, chi);
+      const auto [a2, b2] = rate(u + h / 2 * a1, chi + h / 2 * b1);
+      const auto [a3, b3] = rate(u + h / 2 * a2, chi + h / 2 * b2);
+      const auto [a4, b4] = rate(u + h * a3, chi + h * b3);
+      u += h / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
+      chi += h / 6 * (b1 + 2 * b2 + 2 * b3 + b4);
+    }
+    return std::pair{u, chi};
+  };
+  for (std::size_t i = 0; i < run.rows.size(); i += 5) {
+    const double t = run.at(i, "t");
+    if (t >= rolls || std::abs(t / 0.01 - std::round(t / 0.01)) > 1e-9) continue;
+    const auto [u, chi] = integrate(std::cos(beta), t);
+    const double s1 = run.at(i, "slip"), s2 = run.at(i, "slip2");
+    EXPECT_NEAR(std::hypot(s1, s2), u, 1e-8) << t;
+    EXPECT_NEAR(std::atan2(s2, s1), chi, 1e-8) << t;
+  }
+  // the sphere rolls where (9.28)'s u reaches 0, and the printed u̇ misses it
+  EXPECT_NEAR(integrate(std::cos(beta), rolls).first, 0, 1e-6);
+  const double at = 0.3;
+  const auto [printed, unused] = integrate(1.0, at);
+  const auto [corrected, unused2] = integrate(std::cos(beta), at);
+  EXPECT_GT(std::abs(printed - corrected), 1e-2);
+}
+
 // Inside a pipe of radius R about E2, the centre at angle θ from the lowest line moves on a circle
 // of radius R − r, and rolling (v̄ + ω × r n = 0 at the contact x̄ + r n) gives the sphere
 // ω = (R − r) θ̇/r E2: T = ½ (7/5) m (R − r)² θ̇², so (7/5)(R − r) θ̈ = −g sin θ, integrated here by
