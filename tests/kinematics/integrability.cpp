@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "unidyn/io/model_file.hpp"
@@ -106,6 +107,55 @@ constraints:
       "held.yaml");
   EXPECT_FALSE(set_integrability(held, {0, 1, 2}).integrable);
   EXPECT_TRUE(set_integrability(held, {0, 1, 2, 3, 4}).integrable);
+}
+
+// Ex. 8.4, the tippe top (3-1-3 angles ψ, θ, φ; x_P − x̄ = −R E3 + l e3): (b) its slip
+// velocities are v_s1 = ẋ1 − Ω2 (R − l cos θ) + Ω3 l sin θ cos ψ and
+// v_s2 = ẋ2 + Ω1 (R − l cos θ) + Ω3 l sin θ sin ψ with Ω_i = ω · E_i (typed here from the 3-1-3
+// set: ω = ψ̇ E3 + θ̇ e1′ + φ̇ e3); (e) of the rolling constraints v_P · E_i = 0 the first two are
+// not integrable, the third (the height's rate) is.
+TEST(Integrability, TippeTopExercise84) {
+  const System s = parse_model(R"yaml(unidyn: 1
+parameters: {R: 0.02, l: 0.006}
+coordinates: [x1, x2, x3, psi, theta, phi]
+bodies:
+  top:
+    mass: 1
+    inertia: [1, 1, 0.8]
+    rotation: {euler: 3-1-3, angles: [psi, theta, phi]}
+    center: [x1, x2, x3]
+constraints:
+  - {name: s1, velocity: "dot(top.velocity + cross(top.omega, l*top.e3 - R*E3), E1)"}
+  - {name: s2, velocity: "dot(top.velocity + cross(top.omega, l*top.e3 - R*E3), E2)"}
+  - {name: s3, velocity: "dot(top.velocity + cross(top.omega, l*top.e3 - R*E3), E3)"}
+)yaml",
+                               "tippe-top.yaml");
+  const double R = 0.02, l = 0.006;
+  const double x[6] = {0.1, -0.2, 0.014, 0.7, 1.9, -0.4};
+  const double v[6] = {0.3, -0.5, 0.2, 4.0, -1.5, 60.0};
+  GiNaC::exmap at;
+  for (const auto& p : s.parameters) at[p.symbol] = p.value;
+  const auto& q = s.coordinates();
+  for (std::size_t i = 0; i < 6; ++i) {
+    at[q[i].value] = x[i];
+    at[q[i].rate] = v[i];
+  }
+  const auto value = [&](const Expr& e) {
+    return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(at))).to_double();
+  };
+  const double psi = x[3], theta = x[4], dpsi = v[3], dtheta = v[4], dphi = v[5];
+  const double W1 = dtheta * std::cos(psi) + dphi * std::sin(theta) * std::sin(psi);
+  const double W2 = dtheta * std::sin(psi) - dphi * std::sin(theta) * std::cos(psi);
+  const double W3 = dpsi + dphi * std::cos(theta);
+  const double vs1 =
+      v[0] - W2 * (R - l * std::cos(theta)) + W3 * l * std::sin(theta) * std::cos(psi);
+  const double vs2 =
+      v[1] + W1 * (R - l * std::cos(theta)) + W3 * l * std::sin(theta) * std::sin(psi);
+  EXPECT_NEAR(value(s.constraints[0].expression), vs1, 1e-12);
+  EXPECT_NEAR(value(s.constraints[1].expression), vs2, 1e-12);
+  EXPECT_FALSE(constraint_integrability(s, 0).integrable);
+  EXPECT_FALSE(constraint_integrability(s, 1).integrable);
+  EXPECT_TRUE(constraint_integrability(s, 2).integrable);
 }
 
 // §1.8 (1.14): the hyperbola x y = c, z = 0 as velocity constraints y ẋ + x ẏ = 0, ż = 0:
