@@ -1,6 +1,6 @@
 // Integrability of velocity constraints: Jacobi's test (1.19)/(1.21) and Frobenius' (8.18), on the
 // book's examples (1.14)–(1.16), Exercises 1.10 and 1.11, Problem 2.8, §5.2's extra constraint,
-// and the rolling disk (10.27)–(10.28), Ex. 8.9.
+// the rolling disk (10.27)–(10.28), Ex. 8.9, and the tippe top, Ex. 8.4.
 #include "unidyn/kinematics/integrability.hpp"
 
 #include <gtest/gtest.h>
