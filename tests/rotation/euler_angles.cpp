@@ -834,3 +834,53 @@ TEST(EulerBookExercise, E79fAircraftAttitudeFromGyros) {
 
 }  // namespace
 }  // namespace unidyn
+
+namespace unidyn {
+namespace {
+
+// Exercise 7.2(d): the robot arm's load turns by the 3-2-3 set (ψ about E3, θ about g2, φ about
+// g3); r = H E3 + L g3 does not depend on φ, so when r returns (ψ, θ as before) the load has
+// turned by Q(t1) Q(t0)ᵀ = L(φ(t1) − φ(t0), g3(t0)).
+TEST(EulerBookExercise, E72dRobotArmTurnsAboutG3WhenItsTipReturns) {
+  const EulerSet set = *EulerSet::parse("3-2-3");
+  test::Random random;
+  for (int trial = 0; trial < 50; ++trial) {
+    const double psi = random.uniform(-3, 3), theta = random.uniform(0.1, 3);
+    const double phi0 = random.uniform(-3, 3), phi1 = random.uniform(-3, 3);
+    const Tensor Q0 = rotation_tensor(set, Vec3(psi, theta, phi0));
+    const Tensor Q1 = rotation_tensor(set, Vec3(psi, theta, phi1));
+    const Vec3 g3_0 = euler_basis(set, Vec3(psi, theta, phi0)).col(2);
+    const Vec3 g3_1 = euler_basis(set, Vec3(psi, theta, phi1)).col(2);
+    EXPECT_LT((g3_1 - g3_0).norm(), 1e-15) << "r = H E3 + L g3 returns";
+    EXPECT_LT(max_abs_diff(Q1 * Q0.transpose(), test::book_L(phi1 - phi0, g3_0)), 1e-14);
+  }
+}
+
+// Exercise 8.3(c): body 1 turned by Q1 (3-2-1 angles γ), body 2 by Q2 = Q1 P with P the 1-3-1
+// set of angles ν relative to body 1: ω2 − ω1 = ν̇¹ ₁e1 + ν̇² ₂e3′ + ν̇³ ₂e1 (₂e3′ = Q1 L(ν¹, E1) E3,
+// ₂e1 = Q2 E1) — against ω = axial(Q̇ Qᵀ) of both bodies by finite differences.
+TEST(EulerBookExercise, E83RelativeAngularVelocity) {
+  const EulerSet body1 = *EulerSet::parse("3-2-1"), relative = *EulerSet::parse("1-3-1");
+  const auto gamma = [](double t) {
+    return Vec3(0.3 + 0.7 * t, -0.2 + 0.4 * t * t, 1.1 - 0.5 * t);
+  };
+  const auto nu = [](double t) { return Vec3(0.5 - 0.9 * t, 1.2 + 0.3 * t, -0.4 + 1.3 * t * t); };
+  const auto Q1 = [&](double t) { return rotation_tensor(body1, gamma(t)); };
+  const auto Q2 = [&](double t) { return Tensor(Q1(t) * rotation_tensor(relative, nu(t))); };
+  // ω of Q(t): the axial vector of Q̇ Qᵀ
+  const auto omega = [](const std::function<Tensor(double)>& Q, double t) {
+    const Tensor W = test::derivative(Q, t) * Q(t).transpose();
+    return Vec3(W(2, 1), W(0, 2), W(1, 0));
+  };
+  for (const double t : {0.0, 0.4, 1.1}) {
+    const Vec3 rates = (nu(t + 1e-6) - nu(t - 1e-6)) / 2e-6;
+    const Vec3 e1_body1 = Q1(t) * Vec3::UnitX();
+    const Vec3 e3_prime = Q1(t) * test::book_L(nu(t)[0], Vec3::UnitX()) * Vec3::UnitZ();
+    const Vec3 e1_body2 = Q2(t) * Vec3::UnitX();
+    const Vec3 book = rates[0] * e1_body1 + rates[1] * e3_prime + rates[2] * e1_body2;
+    EXPECT_LT((omega(Q2, t) - omega(Q1, t) - book).norm(), 1e-8) << t;
+  }
+}
+
+}  // namespace
+}  // namespace unidyn
