@@ -7,8 +7,10 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "unidyn/io/model_file.hpp"
+#include "unidyn/symbolic/derivative.hpp"
 
 namespace unidyn {
 namespace {
@@ -29,6 +31,42 @@ TEST(Integrability, SimplestNonIntegrableConstraint) {
   EXPECT_FALSE(result.integrable);
   EXPECT_EQ(result.witness, "I(x, y, z)");
   EXPECT_TRUE((result.value + 1).is_zero()) << result.value;
+}
+
+// §1.8 (1.17), after Pars: any y = f(x), z = f′(x) satisfies (1.16), and the family
+// f = (3Δy − Δx Σz) s² − (2Δy − Δx Σz) s³ + c (x − x_A)²(x_B − x)² + d sin²(π s)
+//     + z_A (x − x_A)(x_B − x)/Δx + y_A,   s = (x − x_A)/Δx,
+// joins A = (x_A, y_A, z_A) to B for every c and d: f and f′ (by unidyn's derivative) take the
+// end values. ⚠ As printed, with s in place of s³, the slopes miss them.
+TEST(Integrability, ParsFamilyOfPathsJoinsAAndB) {
+  const GiNaC::realsymbol x("x");
+  const double xA = 0.5, yA = -1.0, zA = 0.3, xB = 2.0, yB = 0.7, zB = -1.1;
+  const double dx = xB - xA, dy = yB - yA, sz = zA + zB;
+  const Expr s = (x - xA) / dx;
+  const auto family = [&](double c, double d, int power) {
+    return (3 * dy - dx * sz) * GiNaC::pow(s, 2) - (2 * dy - dx * sz) * GiNaC::pow(s, power) +
+           c * GiNaC::pow(x - xA, 2) * GiNaC::pow(xB - x, 2) +
+           d * GiNaC::pow(GiNaC::sin(GiNaC::Pi * s), 2) + zA * (x - xA) * (xB - x) / dx + yA;
+  };
+  const auto at = [&](const Expr& e, double where) {
+    return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(x == where))).to_double();
+  };
+  const System path_system = particle_with("  - {name: c, velocity: der(y) - z*der(x)}\n");
+  for (const auto& [c, d] : {std::pair{0.0, 0.0}, std::pair{1.5, -0.7}, std::pair{-3.0, 2.0}}) {
+    const Expr f = family(c, d, 3), slope = derivative(f, x);
+    EXPECT_NEAR(at(f, xA), yA, 1e-14);
+    EXPECT_NEAR(at(f, xB), yB, 1e-14);
+    EXPECT_NEAR(at(slope, xA), zA, 1e-14);
+    EXPECT_NEAR(at(slope, xB), zB, 1e-13);
+    const Expr printed = derivative(family(c, d, 1), x);
+    EXPECT_GT(std::abs(at(printed, xA) - zA) + std::abs(at(printed, xB) - zB), 0.1);
+    // along the path (x, f, f′) moving at ẋ the constraint's ẏ − z ẋ vanishes
+    const auto& q = path_system.coordinates();
+    const Expr xdot = 0.8;
+    const Expr residual = path_system.constraints[0].expression.subs(
+        GiNaC::lst{q[1].rate, q[2].value, q[0].rate}, GiNaC::lst{slope * xdot, slope, xdot});
+    EXPECT_NEAR(at(residual.subs(q[0].value == x), 1.3), 0, 1e-15);
+  }
 }
 
 // Exercise 1.10: only x ẋ + y ẏ + e(t) = 0 is integrable (a cylinder whose radius changes in time).
