@@ -5,6 +5,7 @@
 #include <Eigen/QR>
 #include <cmath>
 
+#include "unidyn/integrate/simulation.hpp"
 #include "unidyn/numeric/number_text.hpp"
 #include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/real_value.hpp"
@@ -98,7 +99,10 @@ std::vector<std::string> complete_initial_state(const System& system,
                                                 SimulationStart& start) {
   std::vector<std::string> computed;
   const std::size_t m = compiled.constraint_count();
-  if (m == 0) return computed;
+  if (m == 0) {
+    expect_no_gimbal_lock(system, start.q, "starts", "start it elsewhere");
+    return computed;
+  }
   const std::span<const double> p(start.parameters);
   CompiledSystemData data = compiled.make_data();
   const Eigen::VectorXd q_given_values = start.q;
@@ -218,6 +222,8 @@ std::vector<std::string> complete_initial_state(const System& system,
     if (start.qdot[j] != 0.0)
       computed.push_back("der(" + q[j].name + ") = " + detail::to_short_text(start.qdot[j]));
   }
+  // the Euler angles computed too must be clear of gimbal lock
+  expect_no_gimbal_lock(system, start.q, "starts", "start it elsewhere");
   return computed;
 }
 

@@ -215,10 +215,19 @@ std::unique_ptr<Stepper> make_stepper(const SimulationOptions& options, OdeFunct
 }  // namespace
 
 void expect_no_gimbal_lock(const System& system, const Eigen::VectorXd& q, const std::string& state,
-                           const std::string& advice) {
-  for (const Body& body : system.bodies) {
+                           const std::string& advice, const std::vector<bool>& given) {
+  for (std::size_t b = 0; b < system.bodies.size(); ++b) {
+    const Body& body = system.bodies[b];
     if (!body.chart) continue;
     const auto& c = body.chart->coordinates;
+    // angles left to be computed from the constraints are checked once they are (unless an
+    // angular velocity given for the body needs them now)
+    const bool omega_given =
+        std::any_of(system.initial_omegas.begin(), system.initial_omegas.end(),
+                    [&](const InitialOmega& omega) { return omega.body == b; });
+    if (!given.empty() && !omega_given && !(given[c[0]] && given[c[1]] && given[c[2]])) {
+      continue;
+    }
     const Vec3 angles(q[static_cast<Eigen::Index>(c[0])], q[static_cast<Eigen::Index>(c[1])],
                       q[static_cast<Eigen::Index>(c[2])]);
     if (std::abs(euler_basis_volume(body.chart->set, angles)) > kGimbalLockStop) continue;
@@ -341,7 +350,7 @@ SimulationStart initial_state(const System& system,
     start.qdot[I] =
         qdot_override[i] ? *qdot_override[i] : to_double(system.initial_rates[i], values);
   }
-  expect_no_gimbal_lock(system, start.q, "starts", "start it elsewhere");
+  expect_no_gimbal_lock(system, start.q, "starts", "start it elsewhere", start.q_given);
   for (const InitialOmega& omega : system.initial_omegas) {
     for (const std::size_t j : omega.coordinates) {
       if (qdot_override[j]) {

@@ -128,9 +128,11 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
 // A body described by Euler angles must not be at their gimbal lock in q, where the angle rates of
 // a given ω do not exist and the mass matrix is singular: std::invalid_argument (bad input)
 // "body 'B' <state> at the gimbal lock of its ... Euler angles (...): <advice>, or describe its
-// rotation with" the Euler set most regular at that rotation, or with Euler parameters.
+// rotation with" the Euler set most regular at that rotation, or with Euler parameters. With
+// `given` (which coordinates were given), a body whose angles are not all given is left for the
+// check after they are computed from the constraints (complete_initial_state).
 void expect_no_gimbal_lock(const System& system, const Eigen::VectorXd& q, const std::string& state,
-                           const std::string& advice);
+                           const std::string& advice, const std::vector<bool>& given = {});
 
 SimulationStart initial_state(const System& system,
                               const std::vector<std::pair<std::string, double>>& overrides);
