@@ -32,6 +32,33 @@ Contacts::Contacts(const System& system, const CompiledSystem& compiled,
     }
     restitution_.push_back(r);
   }
+  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+    const std::string& contact = system.constraints[k].off_while;
+    if (contact.empty()) continue;
+    for (std::size_t j = 0; j < system.constraints.size(); ++j) {
+      if (system.constraints[j].name == contact) switched_.emplace_back(k, j);
+    }
+  }
+}
+
+void Contacts::follow_contact(std::size_t k) {
+  for (const auto& [c, contact] : switched_) {
+    if (contact == k) active_[c] = !active_[k];
+  }
+}
+
+std::string Contacts::switch_on(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot,
+                                std::size_t k) {
+  std::string text;
+  for (const auto& [c, contact] : switched_) {
+    if (contact != k || active_[c]) continue;
+    active_[c] = true;
+    // every row that holds goes to rate 0, c's from where it was
+    compiled_.constraints(t, q, qdot, parameters_, data_);
+    const double nu = impulse(t, q, qdot, c, 0.0);
+    text += "; '" + system_.constraints[c].name + "' switches on: impulse " + detail::to_text(nu);
+  }
+  return text;
 }
 
 std::vector<std::string> Contacts::start(double t, const Eigen::VectorXd& q,
@@ -55,6 +82,7 @@ std::vector<std::string> Contacts::start(double t, const Eigen::VectorXd& q,
   // a contact whose force would pull is not one: drop the most negative until all push
   Eigen::VectorXd qddot, lambda;
   for (std::size_t round = 0; round < unilateral_.size(); ++round) {
+    for (const std::size_t k : unilateral_) follow_contact(k);
     data_.active = active_;
     compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data_);
     std::size_t worst = system_.constraints.size();
@@ -68,9 +96,13 @@ std::vector<std::string> Contacts::start(double t, const Eigen::VectorXd& q,
     if (worst == system_.constraints.size()) break;
     active_[worst] = false;
   }
+  for (const std::size_t k : unilateral_) follow_contact(k);
   for (const std::size_t k : unilateral_) {
     lines.push_back("'" + system_.constraints[k].name + "' " +
                     (active_[k] ? "in contact" : "free"));
+  }
+  for (const auto& [c, contact] : switched_) {
+    if (!active_[c]) lines.push_back("'" + system_.constraints[c].name + "' off");
   }
   return lines;
 }
@@ -93,7 +125,7 @@ std::string Contacts::handle(double t, const Eigen::VectorXd& q, Eigen::VectorXd
   const std::string name = "'" + system_.constraints[k].name + "'";
   if (active_[k]) {
     active_[k] = false;
-    return "contact " + name + " lost (its force reached 0)";
+    return "contact " + name + " lost (its force reached 0)" + switch_on(t, q, qdot, k);
   }
   compiled_.constraints(t, q, qdot, parameters_, data_);
   const auto K = static_cast<Eigen::Index>(k);
@@ -106,11 +138,20 @@ std::string Contacts::handle(double t, const Eigen::VectorXd& q, Eigen::VectorXd
            detail::to_text(-e * rate) + " (restitution " + detail::to_text(e) + "), impulse " +
            detail::to_text(nu);
   }
-  impulse(t, q, qdot, k, 0.0);
+  // a plastic impact: the constraints it switches off take no part
+  active_[k] = true;
+  follow_contact(k);
+  active_[k] = false;
+  const double nu = impulse(t, q, qdot, k, 0.0);
   if (try_hold(t, q, qdot, k)) {
-    return "contact " + name + " made (approach rate " + detail::to_text(rate) + ")";
+    std::string text = "contact " + name + " made (approach rate " + detail::to_text(rate) +
+                       ", impulse " + detail::to_text(nu) + ")";
+    for (const auto& [c, contact] : switched_) {
+      if (contact == k) text += "; '" + system_.constraints[c].name + "' switches off";
+    }
+    return text;
   }
-  return name + " touched and left";
+  return name + " touched and left" + switch_on(t, q, qdot, k);
 }
 
 double Contacts::impulse(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot, std::size_t k,
@@ -143,6 +184,7 @@ double Contacts::impulse(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qd
 bool Contacts::try_hold(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                         std::size_t k) {
   active_[k] = true;
+  follow_contact(k);
   data_.active = active_;
   Eigen::VectorXd qddot, lambda;
   compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data_);

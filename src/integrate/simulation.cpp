@@ -69,7 +69,8 @@ std::string energy_not_conserved(const System& system) {
   for (const auto& c : system.constraints) {
     driven = driven || c.expression.has(t);
     friction = friction || c.friction.has_value();
-    impacts = impacts || (c.unilateral && c.restitution != 1);
+    // a constraint switched on takes its impulse as a plastic impact does
+    impacts = impacts || (c.unilateral && c.restitution != 1) || !c.off_while.empty();
   }
   std::string why;
   const auto add = [&](const char* text) { why += (why.empty() ? "" : "; ") + std::string(text); };

@@ -298,7 +298,8 @@ void ModelReader::add_unit_norm_constraint(const YAML::Node& node, const std::st
        name,
        {},
        true,
-       0});
+       0,
+       {}});
 }
 
 // definitions: name: expression, in order; each may use the parameters, coordinates, particles,

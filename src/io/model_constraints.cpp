@@ -41,12 +41,13 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
   if (!node.IsSequence()) fail(node, "constraints must be a list");
   const SystemScope scope(system);
   std::set<std::string> names;
-  std::vector<std::pair<std::size_t, YAML::Node>> rough;  // each rough constraint's friction:
+  std::vector<std::pair<std::size_t, YAML::Node>> rough;     // each rough constraint's friction:
+  std::vector<std::pair<std::size_t, YAML::Node>> switched;  // each off_while:
   for (const auto& spec : node) {
     expect_map(spec, "a constraint");
     expect_keys(spec,
                 {"name", "position", "velocity", "ball", "pin", "rolling", "unilateral",
-                 "restitution", "friction"},
+                 "restitution", "friction", "off_while"},
                 "a constraint");
     if (!!spec["position"] + !!spec["velocity"] + !!spec["ball"] + !!spec["pin"] +
             !!spec["rolling"] !=
@@ -75,7 +76,7 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
         false,    std::nullopt,
         at(spec), name,
         {},       false,
-        0};
+        0,        {}};
     if (!names.insert(c.name).second || system.find_parameter(c.name) ||
         system.find_coordinate(c.name) || system.find_particle(c.name)) {
       fail(spec["name"] ? spec["name"] : spec, "'" + c.name + "' is already defined");
@@ -128,6 +129,13 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
         }
       }
     }
+    if (spec["off_while"]) {
+      if (c.kind != Constraint::Kind::velocity || c.unilateral) {
+        fail(spec["off_while"], "off_while: is for a velocity constraint (bilateral)");
+      }
+      c.off_while = scalar(spec["off_while"], "off_while");
+      switched.emplace_back(system.constraints.size(), spec["off_while"]);
+    }
     if (spec["friction"]) {
       c.friction = read_friction(spec["friction"], c, system);
       rough.emplace_back(system.constraints.size(), spec["friction"]);
@@ -135,6 +143,15 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
     system.constraints.push_back(std::move(c));
   }
   check_friction(rough, system);
+  // off_while: names a unilateral contact
+  for (const auto& [k, off_while] : switched) {
+    const std::string& name = system.constraints[k].off_while;
+    const auto contact = std::find_if(system.constraints.begin(), system.constraints.end(),
+                                      [&](const Constraint& other) { return other.name == name; });
+    if (contact == system.constraints.end() || !contact->unilateral) {
+      fail(off_while, "off_while: names no unilateral constraint '" + name + "'");
+    }
+  }
 }
 
 // ball: {body: A, point: [X on A], to: B, to_point: [X on B]} — or, without to:, a fixed point

@@ -41,7 +41,8 @@ Constraint row(const std::string& joint, int k, const Expr& psi, const SourcePos
           joint,
           {},
           false,
-          0};
+          0,
+          {}};
 }
 
 // Adds (f, h) on the end's body, if it has one.

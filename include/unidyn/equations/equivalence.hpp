@@ -16,7 +16,9 @@ struct EquivalenceReport {
   bool symbolic_zero = false;
   // The same evaluated in doubles at random states (q, q̇, q̈, t in [−1, 1], parameters at their
   // values): the largest |residual| relative to the larger of the sum of Lagrange's terms and the
-  // sum of the residual's own terms (the scale of the round-off where they cancel).
+  // sum of the residual's own terms (the scale of the round-off where they cancel). States where
+  // Lagrange's terms are not real (outside the model's domain: sqrt(L^2 - x^2) at |x| > L) are
+  // left out; `states` counts those used.
   int states = 0;
   double numeric_relative_residual = 0.0;
 };

@@ -3,6 +3,9 @@
 // met when Ψ reaches 0, with an impact of restitution e: the impulse P = ν ∂Ψ/∂q (with the other
 // active constraints' impulses keeping them) takes the approach rate Ψ̇⁻ to Ψ̇⁺ = −e Ψ̇⁻; e = 0 (or a
 // rebound too slow to matter) makes the contact hold from then on, if its force pushes.
+// A velocity constraint with `off_while: contact` is off while that contact holds, and switches on
+// when it is lost, with the impulse ν that makes it hold (the rows that hold keep their rates):
+// book §2.10, Fig. 2.10b, the jumps I_c1 (the wall) and I_c2 (the constraint ẏ = 0).
 #pragma once
 
 #include <Eigen/Dense>
@@ -43,6 +46,11 @@ class Contacts {
                  double target);
   // Activates k if its force then pushes; returns whether it does.
   bool try_hold(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, std::size_t k);
+  // The constraints switched by contact k: on while it does not hold.
+  void follow_contact(std::size_t k);
+  // Switches on, with the jump that makes them hold, the constraints contact k has released;
+  // returns "; 'c' switches on: impulse ν" for each.
+  std::string switch_on(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot, std::size_t k);
 
   const System& system_;
   const CompiledSystem& compiled_;
@@ -51,6 +59,7 @@ class Contacts {
   std::vector<std::size_t> unilateral_;  // constraint index per event function
   std::vector<double> restitution_;
   std::vector<bool> active_;
+  std::vector<std::pair<std::size_t, std::size_t>> switched_;  // (constraint, its contact)
 };
 
 // Below this rebound rate (of Ψ̇, in the constraint's units per second) an impact ends in contact:

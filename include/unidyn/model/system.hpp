@@ -156,6 +156,10 @@ struct Constraint {
   bool parametrisation = false;
   // A unilateral constraint's coefficient of restitution at impact (§2.10): 0 is plastic.
   Expr restitution = 0;
+  // A velocity constraint that is off while the unilateral contact of this name holds (book
+  // §2.10, Fig. 2.10b: x ẏ = 0 as ẏ = 0 away from a wall at x = 0); it switches on, when the
+  // contact is lost, with the impulse that makes it hold. Empty: always on.
+  std::string off_while;
 };
 
 // A named scalar to report: an extra CSV column, or a quantity the summary checks for drift.
