@@ -109,6 +109,46 @@ TEST(SlidingDisk, Integrals) {
 namespace unidyn {
 namespace {
 
+// Euler's disk (named in book §9.9): rolling in place — its centre at rest, the disk turning about
+// the line from the centre to the contact point — at a tilt α from the table, Euler's law about the
+// centre (the contact force m g E3 has the moment R m g cos α e3 × u) asks for the precession
+// Ω² = 4 g/(R sin α): the contact point's frequency rises as the disk sinks (Ω ∝ α^(−1/2)). The
+// run stays there (θ = α, ψ̇ = Ω); 3 % off that rate it does not. The abrupt stop needs the
+// dissipation the model leaves out.
+TEST(RollingDisk, EulersDiskRollsInPlaceAtOmegaSquaredFourGOverRSinAlpha) {
+  double previous = 0;
+  for (const double alpha : {0.5, 0.2, 0.08}) {
+    const double Omega = std::sqrt(4 * g / (R * std::sin(alpha)));
+    EXPECT_GT(Omega, previous) << "the frequency rises as the disk sinks";
+    previous = Omega;
+    for (const double factor : {1.0, 1.03}) {
+      const double rate = factor * Omega;
+      const test::ModelRun run = test::run_model("rolling-disk",
+                                                 {{"theta", alpha},
+                                                  {"x3", R * std::sin(alpha)},
+                                                  {"der(psi)", rate},
+                                                  {"der(phi)", -rate * std::cos(alpha)},
+                                                  {"der(x1)", 0.0},
+                                                  {"der(x2)", 0.0},
+                                                  {"der(theta)", 0.0}},
+                                                 [](SimulationOptions& o) { o.t_end = 1; });
+      ASSERT_TRUE(run.summary.ok) << run.summary.message;
+      double drift = 0;
+      for (std::size_t i = 0; i < run.rows.size(); ++i) {
+        drift = std::max(drift, std::abs(run.at(i, "theta") - alpha));
+        if (factor == 1.0) {
+          EXPECT_NEAR(run.at(i, "der(psi)"), Omega, 1e-8 * Omega) << run.at(i, "t");
+        }
+      }
+      if (factor == 1.0) {
+        EXPECT_LT(drift, 1e-9) << "alpha " << alpha;
+      } else {
+        EXPECT_GT(drift, 1e-3 * alpha) << "alpha " << alpha;
+      }
+    }
+  }
+}
+
 // `rolling: {body, at, normal}` is the same pair of no-slip rows as the two written out in
 // rolling-disk.yaml: one motion; and its closed-form loads f = t, h = (x_P − x̄) × t (8.22) are the
 // ones solved from its rows.
