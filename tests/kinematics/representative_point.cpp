@@ -27,6 +27,18 @@ double value(const Expr& e, const System& system, const std::vector<double>& val
   return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(at))).to_double();
 }
 
+// a^K · a_J = δ^K_J at the state
+void expect_reciprocal(const RepresentativePoint& point, const System& system,
+                       const std::vector<double>& at) {
+  for (std::size_t K = 0; K < point.contravariant.size(); ++K) {
+    for (std::size_t J = 0; J < point.covariant.size(); ++J) {
+      EXPECT_NEAR(value(dot(point.contravariant[K], point.covariant[J]), system, at),
+                  K == J ? 1.0 : 0.0, 1e-14)
+          << K << ", " << J;
+    }
+  }
+}
+
 const std::string two_particles = R"(unidyn: 1
 parameters: {m1: 1.5, m2: 0.5}
 coordinates: [r1, th1, z1, R2, ph2, th2]
@@ -54,11 +66,8 @@ particles:
     EXPECT_NEAR(value(dot(point.covariant[K], point.covariant[K]), system, at), m_i / 2.0, 1e-15);
     EXPECT_NEAR(value(dot(point.contravariant[K], point.contravariant[K]), system, at), 2.0 / m_i,
                 1e-14);
-    for (std::size_t J = 0; J < 6; ++J) {
-      EXPECT_NEAR(value(dot(point.covariant[K], point.contravariant[J]), system, at),
-                  K == J ? 1.0 : 0.0, 1e-15);
-    }
   }
+  expect_reciprocal(point, system, at);
 }
 
 // Ex. 5.3(b)–(c): the book's a_K on e_K and a^K on e^K, component by component, and
@@ -95,11 +104,8 @@ TEST(RepresentativePoint, CoordinateBasesOfExercise53) {
         EXPECT_NEAR(value(point.contravariant[K][c], system, at), upper[K][c] / scale, 1e-13)
             << K << c;
       }
-      for (std::size_t J = 0; J < 6; ++J) {
-        EXPECT_NEAR(value(dot(point.contravariant[K], point.covariant[J]), system, at),
-                    K == J ? 1.0 : 0.0, 1e-14);
-      }
     }
+    expect_reciprocal(point, system, at);
   }
 }
 
