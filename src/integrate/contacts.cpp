@@ -53,8 +53,7 @@ std::string Contacts::switch_on(double t, const Eigen::VectorXd& q, Eigen::Vecto
   for (const auto& [c, contact] : switched_) {
     if (contact != k || active_[c]) continue;
     active_[c] = true;
-    // every row that holds goes to rate 0, c's from where it was
-    compiled_.constraints(t, q, qdot, parameters_, data_);
+    // c's rate jumps to 0, the rows that hold keep theirs
     const double nu = impulse(t, q, qdot, c, 0.0);
     text += "; '" + system_.constraints[c].name + "' switches on: impulse " + detail::to_text(nu);
   }
