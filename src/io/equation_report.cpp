@@ -5,6 +5,13 @@
 #include "unidyn/symbolic/textbook_form.hpp"
 
 namespace unidyn {
+
+std::string constraint_kind_text(const Constraint& c) {
+  std::string text = c.kind == Constraint::Kind::position ? "position" : "velocity";
+  if (c.unilateral) text += ", unilateral";
+  if (!c.off_while.empty()) text += ", off while '" + c.off_while + "' holds";
+  return text;
+}
 namespace {
 
 std::vector<Expr> accelerations(const System& system) {
@@ -145,10 +152,8 @@ void write_lagrange(std::ostream& out, const System& system, const EquationsOfMo
   }
   for (std::size_t k = 0; k < constraints.size(); ++k) {
     const Constraint& c = constraints[k];
-    out << "  constraint " << c.name << " ("
-        << (c.kind == Constraint::Kind::position ? "position" : "velocity")
-        << (c.unilateral ? ", unilateral" : "") << "): " << to_text(form.constraints[k])
-        << " = 0, multiplier " << c.multiplier << "\n";
+    out << "  constraint " << c.name << " (" << constraint_kind_text(c)
+        << "): " << to_text(form.constraints[k]) << " = 0, multiplier " << c.multiplier << "\n";
   }
 }
 

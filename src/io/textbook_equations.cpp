@@ -220,10 +220,9 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
                       (c.kind == Constraint::Kind::velocity ? " \\quad\\text{(velocity)}" : "") +
                       " \\label{eq:" + c.name + "}");
     } else {
-      out << "  constraint " << c.name << " ("
-          << (c.kind == Constraint::Kind::position ? "position" : "velocity")
-          << (c.unilateral ? ", unilateral" : "") << "): " << to_text(psi[k].coefficient)
-          << " = 0, multiplier " << to_text(c.multiplier) << "\n";
+      out << "  constraint " << c.name << " (" << constraint_kind_text(c)
+          << "): " << to_text(psi[k].coefficient) << " = 0, multiplier " << to_text(c.multiplier)
+          << "\n";
     }
   }
   if (latex) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "support/model_run.hpp"
+#include "unidyn/io/equation_report.hpp"
 #include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
@@ -60,16 +61,19 @@ TEST(SwitchingConstraint, TwoVelocityJumpsJoinTheBranches) {
   EXPECT_GT(y1 - y0, 0.4) << "from y = y0 to another line";
 }
 
-// off_while: is for a bilateral velocity constraint and names a unilateral one.
+// off_while: is for a bilateral velocity constraint and names a unilateral one; derive says it.
 TEST(SwitchingConstraint, OffWhileNamesAUnilateralContact) {
   const auto model = [](const std::string& constraints) {
     return "unidyn: 1\ncoordinates: [x, y]\nparticles:\n  P: {mass: 1, position: [x, y, 0]}\n"
            "constraints:\n" +
            constraints;
   };
-  EXPECT_NO_THROW(parse_model(model("  - {name: wall, position: x, unilateral: true}\n"
-                                    "  - {name: rail, velocity: der(y), off_while: wall}\n"),
-                              "ok.yaml"));
+  const System ok = parse_model(model("  - {name: wall, position: x, unilateral: true}\n"
+                                      "  - {name: rail, velocity: der(y), off_while: wall}\n"),
+                                "ok.yaml");
+  // `unidyn derive` says so
+  EXPECT_EQ(constraint_kind_text(ok.constraints[0]), "position, unilateral");
+  EXPECT_EQ(constraint_kind_text(ok.constraints[1]), "velocity, off while 'wall' holds");
   EXPECT_THROW(parse_model(model("  - {name: wall, position: x}\n"
                                  "  - {name: rail, velocity: der(y), off_while: wall}\n"),
                            "bilateral.yaml"),

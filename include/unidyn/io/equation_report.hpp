@@ -12,6 +12,10 @@ namespace unidyn {
 
 enum class EquationFormat { text, latex, json };
 
+// What kind of constraint c is, as the text reports say it: "position", "velocity", with
+// ", unilateral" or ", off while 'C' holds" (off_while).
+std::string constraint_kind_text(const Constraint& c);
+
 // Lagrange's equations: each row Σ_j M_ij q̈^j = f_i + Σ_k λ_k a_k^i, then each constraint, T and U.
 void write_lagrange(std::ostream& out, const System& system, const EquationsOfMotion& eq,
                     EquationFormat format);
