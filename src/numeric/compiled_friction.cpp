@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "unidyn/numeric/compiled_system.hpp"
+#include "unidyn/numeric/number_text.hpp"
 
 namespace unidyn {
 namespace {
@@ -212,7 +213,7 @@ void CompiledSystem::solve_with_friction(double t, Eigen::VectorXd& qddot, Eigen
     if (consistent) return;
   }
   throw std::runtime_error(
-      "the friction at t = " + std::to_string(t) +
+      "the friction at t = " + detail::to_text(t) +
       " has no consistent normal force (the direction assumed for it is never the one solved for: "
       "a Painlevé-type paradox, or friction too large for the contact's geometry)");
 }

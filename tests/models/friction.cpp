@@ -1,6 +1,7 @@
 // Coulomb friction with stick–slip (§2.11, (2.27)–(2.31)): a block on a rough incline, and the
 // roller coaster, against closed forms and the book's equation of motion and stick intervals.
 #include <cmath>
+#include <string>
 
 #include "support/model_run.hpp"
 
@@ -158,6 +159,41 @@ TEST(Friction, DrivenOscillatorSticksAndSlips) {
     }
   }
   EXPECT_GT(checked, 20u);
+}
+
+// Painlevé's paradox: a uniform rod (length 2l) whose lower end slides on a rough floor, at θ from
+// the vertical, with the end moving away from under it. Its end's normal acceleration is
+// (N/m)(1 + 3 sin²θ − 3 μ sinθ cosθ) + …: beyond μ_c = (1 + 3 sin²θ)/(3 sinθ cosθ) no normal force
+// is consistent with the friction it brings, and the run stops saying so (1.9447 at θ = 0.9); just
+// below it slides on.
+TEST(Friction, PainleveParadoxIsReportedBeyondItsThreshold) {
+  const std::string rod = R"(unidyn: 1
+parameters: {m: 1.0, g: 9.81, l: 0.5, mu: 1.0}
+coordinates: [x, y, theta]
+bodies:
+  rod:
+    mass: m
+    inertia: {rod: {length: 2*l}}
+    rotation: {axis: [0, 1, 0], angle: theta}
+    center: [x, 0, y]
+forces:
+  - gravity: -g*E3
+constraints:
+  - name: floor
+    position: dot(rod.center - l*rod.e3, E3)
+    friction: {on: rod, at: rod.center - l*rod.e3, dynamic: mu}
+initial: {theta: 0.9, der(x): -3}
+simulate: {t_end: 0.2, output_step: 0.01}
+)";
+  const double theta = 0.9;
+  const double critical =
+      (1 + 3 * std::pow(std::sin(theta), 2)) / (3 * std::sin(theta) * std::cos(theta));
+  const System system = parse_model(rod, "painleve.yaml");
+  const test::ModelRun below = test::run_system(system, {{"mu", 0.99 * critical}}, {}, true);
+  EXPECT_TRUE(below.summary.ok) << below.summary.message;
+  const test::ModelRun beyond = test::run_system(system, {{"mu", 1.01 * critical}}, {}, true);
+  EXPECT_FALSE(beyond.summary.ok);
+  EXPECT_NE(beyond.summary.message.find("Painlevé"), std::string::npos) << beyond.summary.message;
 }
 
 }  // namespace
