@@ -8,15 +8,6 @@
 namespace unidyn {
 namespace {
 
-// The constraint named `name`, or an error naming the rough constraint `rough`.
-std::size_t constraint_named(const System& system, const std::string& name,
-                             const std::string& rough) {
-  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
-    if (system.constraints[k].name == name) return k;
-  }
-  throw std::invalid_argument("friction on '" + rough + "': with: names no constraint " + name);
-}
-
 // The slip speed |v_t|: v_rel less its part along the normals (one: the surface's; two: off the
 // curve's tangent g1 × g2), written as a square root of a sum of squares.
 Expr slip_speed(const VectorExpr& relative, const std::vector<VectorExpr>& normals) {
@@ -57,7 +48,12 @@ std::vector<FrictionContact> friction_contacts(const System& system) {
     FrictionContact contact{
         {k}, {}, {}, {}, {}, 0, friction.static_coefficient, friction.viscous_coefficient};
     for (const std::string& name : friction.with) {
-      contact.constraints.push_back(constraint_named(system, name, c.name));
+      const auto j = system.find_constraint(name);
+      if (!j) {
+        throw std::invalid_argument("friction on '" + c.name + "': with: names no constraint " +
+                                    name);
+      }
+      contact.constraints.push_back(*j);
     }
     // the contact's velocity v_P and each constraint's normal g_j on P
     const auto p = system.find_particle(friction.on);

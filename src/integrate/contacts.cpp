@@ -35,15 +35,13 @@ Contacts::Contacts(const System& system, const CompiledSystem& compiled,
   for (std::size_t k = 0; k < system.constraints.size(); ++k) {
     const std::string& contact = system.constraints[k].off_while;
     if (contact.empty()) continue;
-    for (std::size_t j = 0; j < system.constraints.size(); ++j) {
-      if (system.constraints[j].name == contact) switched_.emplace_back(k, j);
-    }
+    if (const auto j = system.find_constraint(contact)) switched_.emplace_back(k, *j);
   }
 }
 
-void Contacts::follow_contact(std::size_t k) {
+void Contacts::switch_by(std::size_t k, bool holds) {
   for (const auto& [c, contact] : switched_) {
-    if (contact == k) active_[c] = !active_[k];
+    if (contact == k) active_[c] = !holds;
   }
 }
 
@@ -81,7 +79,7 @@ std::vector<std::string> Contacts::start(double t, const Eigen::VectorXd& q,
   // a contact whose force would pull is not one: drop the most negative until all push
   Eigen::VectorXd qddot, lambda;
   for (std::size_t round = 0; round < unilateral_.size(); ++round) {
-    for (const std::size_t k : unilateral_) follow_contact(k);
+    for (const std::size_t k : unilateral_) switch_by(k, active_[k]);
     data_.active = active_;
     compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data_);
     std::size_t worst = system_.constraints.size();
@@ -95,7 +93,7 @@ std::vector<std::string> Contacts::start(double t, const Eigen::VectorXd& q,
     if (worst == system_.constraints.size()) break;
     active_[worst] = false;
   }
-  for (const std::size_t k : unilateral_) follow_contact(k);
+  for (const std::size_t k : unilateral_) switch_by(k, active_[k]);
   for (const std::size_t k : unilateral_) {
     lines.push_back("'" + system_.constraints[k].name + "' " +
                     (active_[k] ? "in contact" : "free"));
@@ -138,9 +136,7 @@ std::string Contacts::handle(double t, const Eigen::VectorXd& q, Eigen::VectorXd
            detail::to_text(nu);
   }
   // a plastic impact: the constraints it switches off take no part
-  active_[k] = true;
-  follow_contact(k);
-  active_[k] = false;
+  switch_by(k, true);
   const double nu = impulse(t, q, qdot, k, 0.0);
   if (try_hold(t, q, qdot, k)) {
     std::string text = "contact " + name + " made (approach rate " + detail::to_text(rate) +
@@ -183,7 +179,7 @@ double Contacts::impulse(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qd
 bool Contacts::try_hold(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                         std::size_t k) {
   active_[k] = true;
-  follow_contact(k);
+  switch_by(k, true);
   data_.active = active_;
   Eigen::VectorXd qddot, lambda;
   compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data_);

@@ -146,9 +146,8 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
   // off_while: names a unilateral contact
   for (const auto& [k, off_while] : switched) {
     const std::string& name = system.constraints[k].off_while;
-    const auto contact = std::find_if(system.constraints.begin(), system.constraints.end(),
-                                      [&](const Constraint& other) { return other.name == name; });
-    if (contact == system.constraints.end() || !contact->unilateral) {
+    const auto contact = system.find_constraint(name);
+    if (!contact || !system.constraints[*contact].unilateral) {
       fail(off_while, "off_while: names no unilateral constraint '" + name + "'");
     }
   }

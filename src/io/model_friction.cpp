@@ -77,10 +77,7 @@ void ModelReader::check_friction(const std::vector<std::pair<std::size_t, YAML::
     std::size_t item = 0;
     for (const std::string& name : c.friction->with) {
       const YAML::Node where = f["with"][item++];
-      std::optional<std::size_t> other;
-      for (std::size_t j = 0; j < system.constraints.size(); ++j) {
-        if (system.constraints[j].name == name) other = j;
-      }
+      const std::optional<std::size_t> other = system.find_constraint(name);
       if (!other) fail(where, "with: names no constraint '" + name + "'");
       const Constraint& o = system.constraints[*other];
       if (*other == k) fail(where, "with: names the rough constraint itself");
@@ -99,11 +96,8 @@ void ModelReader::check_friction(const std::vector<std::pair<std::size_t, YAML::
   for (const auto& [k, f] : rough) {
     const Constraint& c = system.constraints[k];
     std::vector<std::size_t> holding{k};
-    for (const std::string& name : c.friction->with) {
-      for (std::size_t j = 0; j < system.constraints.size(); ++j) {
-        if (system.constraints[j].name == name) holding.push_back(j);
-      }
-    }
+    for (const std::string& name : c.friction->with)
+      holding.push_back(*system.find_constraint(name));
     for (const std::size_t j : holding) {
       try {
         constraint_loads(system, j);

@@ -62,6 +62,10 @@ std::optional<std::size_t> System::find_body(const std::string& wanted) const {
   return find_by_name(bodies, wanted);
 }
 
+std::optional<std::size_t> System::find_constraint(const std::string& wanted) const {
+  return find_by_name(constraints, wanted);
+}
+
 std::optional<std::size_t> System::find_definition(const std::string& wanted) const {
   return find_by_name(definitions, wanted);
 }

@@ -89,8 +89,8 @@ TEST_P(AllModels, NewtonAndLagrangeAgree) {
 // projection after every step holds them at ~1e-14; dopri5 at rtol 1e-12 would drift far less
 // than 1e-9 in 0.5 s even without it).
 TEST_P(AllModels, ShortSimulationStaysOnTheConstraints) {
-  const auto run = test::run_system(
-      load_model(test::model_path(GetParam())), {},
+  const auto run = test::run_model(
+      GetParam(), {},
       [](SimulationOptions& options) {
         options.t_end = 0.5;
         options.output_step = 0.05;

@@ -105,8 +105,7 @@ TEST(Bicycle, SelfStableBetweenTheWeaveAndCapsizeSpeeds) {
 // The nonlinear run of the bundled model: energy kept (no friction does work in rolling), the
 // front contact at rest, and the roll perturbation dying away at 4.6 m/s (self-stable).
 TEST(Bicycle, RightsItselfAtFourPointSixMetresPerSecond) {
-  const test::ModelRun run =
-      test::run_system(load_model(test::model_path("bicycle")), {}, {}, /*complete=*/true);
+  const test::ModelRun run = test::run_model("bicycle", {}, {}, true);
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
   EXPECT_LT(run.summary.energy_relative_drift, 1e-9);
   double early = 0, late = 0;

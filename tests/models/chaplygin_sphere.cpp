@@ -15,8 +15,7 @@ namespace unidyn {
 namespace {
 
 TEST(ChaplyginSphere, AngularMomentumAboutTheContactPointIsConstant) {
-  const test::ModelRun run =
-      test::run_system(load_model(test::model_path("chaplygin-sphere")), {}, {}, true);
+  const test::ModelRun run = test::run_model("chaplygin-sphere", {}, {}, true);
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
   EXPECT_LT(run.summary.energy_relative_drift, 1e-10);
   ASSERT_EQ(run.summary.conserved_drift.size(), 3u);

@@ -15,8 +15,7 @@ namespace {
 
 TEST(Ellipsoid, SameMotionInCoordinatesOnTheSurface) {
   // der(z) left out: computed from the constraint, as `unidyn simulate` does
-  const test::ModelRun run =
-      test::run_system(load_model(test::model_path("ellipsoid")), {}, {}, true);
+  const test::ModelRun run = test::run_model("ellipsoid", {}, {}, true);
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
   EXPECT_LT(run.summary.energy_relative_drift, 1e-10);
   const double a = 1.2, b = 0.8, x0 = 0.3, y0 = 0.2, vx = 0.4, vy = 1.2;

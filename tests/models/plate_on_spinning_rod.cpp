@@ -19,8 +19,8 @@ using V = Eigen::Vector3d;
 
 test::ModelRun run_plate(double omega) {
   // rows 2.5 ms apart, for Simpson's rule on the power (error ~1e-10)
-  return test::run_system(
-      load_model(test::model_path("plate-on-spinning-rod")), {{"Omega", omega}},
+  return test::run_model(
+      "plate-on-spinning-rod", {{"Omega", omega}},
       [](SimulationOptions& o) { o.output_step = 0.0025; }, true);
 }
 

@@ -14,8 +14,8 @@ namespace unidyn {
 namespace {
 
 test::ModelRun spin(double rate, double delta, double t_end) {
-  return test::run_system(
-      load_model(test::model_path("rattleback")), {{"spin", rate}, {"delta", delta}},
+  return test::run_model(
+      "rattleback", {{"spin", rate}, {"delta", delta}},
       [&](SimulationOptions& o) { o.t_end = t_end; }, true);
 }
 

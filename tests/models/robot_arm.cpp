@@ -19,18 +19,16 @@ namespace {
 using V = Eigen::Vector3d;
 
 TEST(RobotArm, ActuatorLoadsOfExercise113) {
-  const test::ModelRun run =
-      test::run_system(load_model(test::model_path("robot-arm")), {}, {}, true);
+  const test::ModelRun run = test::run_model("robot-arm", {}, {}, true);
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
   const double m = 2.0, g = 9.81, L = 1.2, l1 = 0.3, l2 = 0.25, l3 = 0.05, A = 0.2, w = 1.5;
   const double dpsi = 0.8, dtheta = 0.5;
   const auto vec = [&](std::size_t i, const std::string& name) {
     return V(run.at(i, name + ".x"), run.at(i, name + ".y"), run.at(i, name + ".z"));
   };
-  const test::ModelRun& r = run;
   double worst_exact = 0;
-  for (std::size_t i = 1; i + 1 < r.rows.size(); ++i) {
-    const double t = r.at(i, "t"), psi = r.at(i, "psi"), theta = r.at(i, "theta");
+  for (std::size_t i = 1; i + 1 < run.rows.size(); ++i) {
+    const double t = run.at(i, "t"), psi = run.at(i, "psi"), theta = run.at(i, "theta");
     const V e1(std::cos(psi), std::sin(psi), 0);
     const V e2(-std::sin(psi) * std::cos(theta), std::cos(psi) * std::cos(theta), std::sin(theta));
     const V e3(std::sin(theta) * std::sin(psi), -std::sin(theta) * std::cos(psi), std::cos(theta));
@@ -47,7 +45,7 @@ TEST(RobotArm, ActuatorLoadsOfExercise113) {
         m * L / 2 * (dtheta * dtheta + dpsi * dpsi * std::pow(std::sin(theta), 2)) * e3;
     EXPECT_LT((F - book_F).norm(), 1e-9) << t;
     // (f): exactly Ḣ + (L/2) e3 × F (Ḣ by central differences of the rows)
-    const double h = r.at(i + 1, "t") - t;
+    const double h = run.at(i + 1, "t") - t;
     const V Hdot = (vec(i + 1, "H") - vec(i - 1, "H")) / (2 * h);
     worst_exact = std::max(worst_exact, (M - Hdot - L / 2 * e3.cross(F)).norm());
     const V omega = dpsi * V::UnitZ() + dtheta * e1;
@@ -71,7 +69,7 @@ TEST(RobotArm, ActuatorLoadsOfExercise113) {
 // then — refused when θ0 = 0 puts the 3-1-3 set at its lock, accepted otherwise (above).
 TEST(RobotArm, ComputedAnglesAreCheckedForGimbalLock) {
   try {
-    test::run_system(load_model(test::model_path("robot-arm")), {{"theta0", 0.0}}, {}, true);
+    test::run_model("robot-arm", {{"theta0", 0.0}}, {}, true);
     ADD_FAILURE() << "a start at the gimbal lock must be refused";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("gimbal lock"), std::string::npos) << e.what();

@@ -19,8 +19,7 @@ namespace {
 using V = Eigen::Vector3d;
 
 TEST(RoughMovingSurface, AtRestOnItFrictionNormalForceAndWork) {
-  const test::ModelRun run =
-      test::run_system(load_model(test::model_path("rough-moving-surface")), {}, {}, true);
+  const test::ModelRun run = test::run_model("rough-moving-surface", {}, {}, true);
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
   ASSERT_EQ(run.summary.phases.size(), 1u);
   EXPECT_EQ(run.summary.phases[0].what, "contact 'surface' sticks");

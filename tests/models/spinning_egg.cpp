@@ -12,9 +12,8 @@ namespace unidyn {
 namespace {
 
 test::ModelRun spin(double rate) {
-  return test::run_system(
-      load_model(test::model_path("spinning-egg")), {{"spin", rate}},
-      [](SimulationOptions& o) { o.t_end = 3; }, true);
+  return test::run_model(
+      "spinning-egg", {{"spin", rate}}, [](SimulationOptions& o) { o.t_end = 3; }, true);
 }
 
 TEST(SpinningEgg, RisesOntoItsEndWhenSpunFast) {

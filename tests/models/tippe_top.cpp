@@ -23,13 +23,6 @@ using test::ModelRun;
 
 constexpr double m = 0.015, g = 9.81, R = 0.02, l = 0.006, A = 2.4e-6;
 
-// The bundled model, its start completed from the constraints as `unidyn simulate` does (x3, its
-// rate and the centre's velocity are left out).
-ModelRun run_top(const std::vector<std::pair<std::string, double>>& overrides,
-                 const std::function<void(SimulationOptions&)>& adjust) {
-  return test::run_system(load_model(test::model_path("tippe-top")), overrides, adjust, true);
-}
-
 // The largest relative change of a conserved quantity over the run.
 double relative_drift(const ModelRun& run, const std::string& name) {
   for (const auto& d : run.summary.conserved_drift) {
@@ -44,10 +37,14 @@ double relative_drift(const ModelRun& run, const std::string& name) {
 // energy only falls, and the normal force is (a)'s N = m (g + l θ̈ sin θ + l θ̇² cos θ) = m (g + ẍ3)
 // (ẍ3 by central differences of rows 0.5 ms apart).
 TEST(TippeTop, TurnsOverKeepingJellettsIntegral) {
-  const ModelRun run = run_top({}, [](SimulationOptions& o) {
-    o.t_end = 4;
-    o.output_step = 0.0005;
-  });
+  // (its start completed as `unidyn simulate` does: x3, its rate and the centre's velocity)
+  const ModelRun run = test::run_model(
+      "tippe-top", {},
+      [](SimulationOptions& o) {
+        o.t_end = 4;
+        o.output_step = 0.0005;
+      },
+      true);
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
   EXPECT_LT(relative_drift(run, "jellett"), 1e-8);
   EXPECT_NEAR(run.at(0, "cos_theta"), std::cos(0.1), 1e-12);
@@ -67,7 +64,8 @@ TEST(TippeTop, TurnsOverKeepingJellettsIntegral) {
 
 // With C/A = 1.4 > 1 + l/R the spinning upright top is stable: it stays up.
 TEST(TippeTop, StaysUprightWhenCOverAExceedsOnePlusLOverR) {
-  const ModelRun run = run_top({{"C", 1.4 * A}}, [](SimulationOptions& o) { o.t_end = 4; });
+  const ModelRun run = test::run_model(
+      "tippe-top", {{"C", 1.4 * A}}, [](SimulationOptions& o) { o.t_end = 4; }, true);
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
   EXPECT_LT(relative_drift(run, "jellett"), 1e-8);
   for (std::size_t i = 0; i < run.rows.size(); ++i) {

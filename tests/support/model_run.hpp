@@ -89,11 +89,12 @@ inline ModelRun run_system(System system,
   return run;
 }
 
-// A bundled model, so simulated.
+// A bundled model, so simulated (with `complete`, its start completed as `unidyn simulate` does).
 inline ModelRun run_model(const std::string& name,
                           const std::vector<std::pair<std::string, double>>& overrides = {},
-                          const std::function<void(SimulationOptions&)>& adjust = {}) {
-  return run_system(load_model(model_path(name)), overrides, adjust);
+                          const std::function<void(SimulationOptions&)>& adjust = {},
+                          bool complete = false) {
+  return run_system(load_model(model_path(name)), overrides, adjust, complete);
 }
 
 }  // namespace unidyn::test

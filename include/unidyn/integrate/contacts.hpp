@@ -46,8 +46,8 @@ class Contacts {
                  double target);
   // Activates k if its force then pushes; returns whether it does.
   bool try_hold(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, std::size_t k);
-  // The constraints switched by contact k: on while it does not hold.
-  void follow_contact(std::size_t k);
+  // The constraints switched by contact k: off while it holds (`holds`), on otherwise.
+  void switch_by(std::size_t k, bool holds);
   // Switches on, with the jump that makes them hold, the constraints contact k has released;
   // returns "; 'c' switches on: impulse ν" for each.
   std::string switch_on(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot, std::size_t k);

@@ -256,6 +256,7 @@ struct System {
   std::optional<std::size_t> find_coordinate(const std::string& name) const;
   std::optional<std::size_t> find_particle(const std::string& name) const;
   std::optional<std::size_t> find_body(const std::string& name) const;
+  std::optional<std::size_t> find_constraint(const std::string& name) const;
   std::optional<std::size_t> find_definition(const std::string& name) const;
 
   // v = dr/dt of particle p (1.7).
