@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "semisimple.hpp"
 #include "unidyn/numeric/number_text.hpp"
 
 namespace unidyn {
@@ -49,14 +50,6 @@ std::vector<complex> mode_shape(const Linearization& L, const VectorXcd& v, comp
   shape.cwiseAbs().maxCoeff(&largest);
   if (std::abs(shape[largest]) > 0.0) shape /= shape[largest];
   return {shape.begin(), shape.end()};
-}
-
-// Whether the eigenvalue μ of multiplicity k has k independent eigenvectors.
-bool semisimple(const MatrixXd& A, complex mu, Index k, double scale) {
-  const MatrixXcd shifted = A.cast<complex>() - mu * MatrixXcd::Identity(A.rows(), A.cols());
-  Eigen::FullPivLU<MatrixXcd> lu(shifted);
-  lu.setThreshold(kClose * std::max(scale, 1.0) / std::max(shifted.cwiseAbs().maxCoeff(), 1e-300));
-  return A.rows() - lu.rank() >= k;
 }
 
 std::string eigenvalue_text(complex lambda) {
@@ -154,7 +147,7 @@ ModeAnalysis analyse_modes(const Linearization& L) {
     if (lambda[k].imag() < -tolerance) continue;  // its conjugate speaks for it
     on_axis += (on_axis.empty() ? "" : ", ") + eigenvalue_text(mu) +
                (multiplicity > 1 ? " (" + std::to_string(multiplicity) + " times)" : "");
-    if (!semisimple(L.A, mu, multiplicity, largest)) {
+    if (!detail::semisimple(L.A, mu, multiplicity, kClose * std::max(largest, 1.0))) {
       defective += (defective.empty() ? "" : ", ") + eigenvalue_text(mu);
     }
   }

@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 
+#include "swept_value.hpp"
 #include "unidyn/integrate/simulation.hpp"
 
 namespace unidyn {
@@ -33,13 +34,7 @@ SweepPoint point_at(const System& system, const CompiledSystem& compiled,
   SweepPoint out;
   out.value = value;
   std::size_t zeros = given_zeros.value_or(0);
-  if (system.find_parameter(name)) {
-    parameters.emplace_back(name, value);
-  } else {
-    // a value of the operating point: given (in place of what --at said of it)
-    std::erase_if(given, [&](const GivenValue& g) { return g.name == name; });
-    given.push_back({name, given_number(value)});
-  }
+  detail::put_swept_value(system, name, value, given, parameters);
   try {
     const OperatingPoint point =
         operating_point(system, compiled, given, initial_state(system, parameters).parameters);
@@ -79,19 +74,12 @@ ParameterSweep sweep_modes(const System& system, const CompiledSystem& compiled,
                            const std::vector<GivenValue>& given,
                            const std::vector<std::pair<std::string, double>>& parameters,
                            const std::string& name, double from, double to, std::size_t count) {
-  const bool coordinate = state_value(system, name).has_value();
-  if (!system.find_parameter(name) && !coordinate) {
-    throw std::invalid_argument("--sweep " + name +
-                                ": not a parameter, coordinate or der(coordinate) of the model");
-  }
-  if (count < 2) throw std::invalid_argument("--sweep needs at least 2 values");
+  detail::expect_sweepable(system, name, count);
   ParameterSweep out;
   out.parameter = name;
   for (std::size_t k = 0; k < count; ++k) {
-    const double value = k + 1 == count ? to
-                                        : from + (to - from) * static_cast<double>(k) /
-                                                     static_cast<double>(count - 1);
-    out.points.push_back(point_at(system, compiled, given, parameters, name, value));
+    out.points.push_back(point_at(system, compiled, given, parameters, name,
+                                  detail::swept_value(from, to, k, count)));
   }
   // Where the growth changes sign between neighbours: bisection on it.
   for (std::size_t k = 0; k + 1 < count; ++k) {

@@ -8,9 +8,12 @@
 
 #include "analysis_report.hpp"
 #include "command_model.hpp"
+#include "floquet_report.hpp"
 #include "unidyn/analysis/equilibria.hpp"
 #include "unidyn/analysis/exact_state_matrix.hpp"
+#include "unidyn/analysis/floquet_sweep.hpp"
 #include "unidyn/analysis/parameter_sweep.hpp"
+#include "unidyn/analysis/time_dependence.hpp"
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/integrate/simulation.hpp"
 #include "unidyn/io/csv.hpp"
@@ -52,6 +55,57 @@ SweepRange parse_sweep(const std::string& text) {
   return {axis.name, axis.from, axis.to, axis.count};
 }
 
+// Where stability changes, on standard error; `growing`, `settling`: what happens above a
+// boundary where stability is lost, regained.
+void print_boundaries(const std::string& parameter,
+                      const std::vector<StabilityBoundary>& boundaries,
+                      const std::string& growing = "a mode grows above it",
+                      const std::string& settling = "the last growing mode decays above it") {
+  for (const StabilityBoundary& b : boundaries) {
+    fmt::print(stderr, "stability changes at {} = {:.12g}: {}\n", parameter, b.value,
+               b.becomes_stable ? settling : growing);
+  }
+  if (boundaries.empty()) fmt::print(stderr, "stability does not change in the range\n");
+}
+
+// The --period given, if any.
+std::optional<double> period_given(const AnalysisCommands& c) {
+  for (const CLI::Option* option : c.period_options) {
+    if (option->count() > 0) return c.period;
+  }
+  return std::nullopt;
+}
+
+// modes --sweep of a driven system: the Floquet multipliers, one CSV row per value.
+int run_floquet_sweep(const AnalysisCommands& c, const System& system,
+                      const CompiledSystem& compiled, const TimeDependence& dependence,
+                      const std::vector<GivenValue>& given,
+                      const std::vector<std::pair<std::string, double>>& sets) {
+  const SweepRange range = parse_sweep(c.sweep);
+  const FloquetSweep sweep =
+      sweep_floquet(system, compiled, dependence, given, sets, range.parameter, range.from,
+                    range.to, range.count, period_given(c));
+  const std::vector<std::string> header = floquet_sweep_header(sweep);
+  CsvWriter csv(c.output.empty() ? "-" : c.output);
+  csv.header(header);
+  int failures = 0;
+  for (const FloquetSweepPoint& p : sweep.points) {
+    csv.row(floquet_sweep_row(p, (header.size() - 4) / 2));
+    if (!p.failure.empty()) {
+      ++failures;
+      fmt::print(stderr, "{} = {}: {}\n", range.parameter, p.value, p.failure);
+    }
+  }
+  csv.close();
+  fmt::print(stderr,
+             "the equations depend on t periodically: Floquet multipliers over one period at each "
+             "value; stability changes where the largest |mu| crosses 1\n");
+  print_boundaries(range.parameter, sweep.boundaries,
+                   "a multiplier leaves the unit circle above it (|mu| > 1)",
+                   "every multiplier is back on or inside the unit circle above it");
+  return failures == 0 ? 0 : 1;
+}
+
 // modes --sweep: one CSV row per value, the stability boundaries on standard error.
 int run_sweep(const AnalysisCommands& c, const System& system, const CompiledSystem& compiled,
               const std::vector<GivenValue>& given,
@@ -83,13 +137,49 @@ int run_sweep(const AnalysisCommands& c, const System& system, const CompiledSys
     }
   }
   csv.close();
-  for (const StabilityBoundary& b : sweep.boundaries) {
-    fmt::print(
-        stderr, "stability changes at {} = {:.12g}: {}\n", range.parameter, b.value,
-        b.becomes_stable ? "the last growing mode decays above it" : "a mode grows above it");
-  }
-  if (sweep.boundaries.empty()) fmt::print(stderr, "stability does not change in the range\n");
+  print_boundaries(range.parameter, sweep.boundaries);
   return failures == 0 ? 0 : 1;
+}
+
+// The period of equations that depend on t (nothing for those that do not, or whose drive stands
+// still at these values). Throws std::invalid_argument for a --period given to equations that do
+// not depend on t, NotPeriodic for a dependence that is not periodic.
+std::optional<DrivePeriod> drive_of(const System& system, const CompiledSystem& compiled,
+                                    const TimeDependence& dependence,
+                                    const std::vector<double>& parameters,
+                                    std::optional<double> period) {
+  if (!dependence.depends) {
+    if (period) {
+      throw std::invalid_argument("--period: the equations of motion of " + system.name +
+                                  " do not depend on t, so there is no period to give");
+    }
+    return std::nullopt;
+  }
+  return drive_period(system, compiled, dependence, parameters, period);
+}
+
+// equilibria: equations that change with t have no equilibria to search for at one instant.
+void expect_equilibria_exist(const System& system, const TimeDependence& dependence) {
+  if (!dependence.depends) return;
+  throw std::invalid_argument(
+      "the equations of motion of " + system.name +
+      " depend on t (a moving support or a driving force), so a state at rest at one instant is "
+      "not an equilibrium of the motion; the states the drive keeps at rest are periodic "
+      "motions: analyse one with `unidyn modes MODEL --at NAME=VALUE` (Floquet multipliers over "
+      "a period of the drive)");
+}
+
+// linearize, modes of a periodic motion: A(t0), the monodromy matrix, with modes the multipliers.
+void write_periodic(std::ostream& out, const std::string& command, const AnalysisCommands& c,
+                    const System& system, const CompiledSystem& compiled,
+                    const OperatingPoint& point, const DrivePeriod& drive) {
+  const PeriodicLinearization periodic = linearize_periodic(system, compiled, point, drive);
+  const bool modes = command == "modes";
+  const FloquetAnalysis floquet = modes ? analyse_floquet(periodic) : FloquetAnalysis{};
+  const auto write = c.format == "json"    ? periodic_json
+                     : c.format == "latex" ? periodic_latex
+                                           : periodic_text;
+  out << write(system, point, periodic, modes ? &floquet : nullptr);
 }
 
 }  // namespace
@@ -107,6 +197,10 @@ void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
     command->add_option("--format", c.format, "text | latex | json")
         ->check(CLI::IsMember({"text", "latex", "json"}))
         ->capture_default_str();
+    c.period_options.push_back(command->add_option(
+        "--period", c.period,
+        "T: the period of equations that depend on t (found from their sines and cosines of "
+        "multiples of t when not given), checked on the equations"));
   };
   c.linearize = app.add_subcommand(
       "linearize", "Linearise the equations of motion about an equilibrium or a steady motion");
@@ -151,16 +245,23 @@ void write_analysis(std::ostream& out, const std::string& command, const Analysi
       parse_given_values(system, c.at, equilibria && !c.cyclic.empty());
   const EquationsOfMotion equations = lagrange_equations(system);
   const CompiledSystem compiled(system, equations);
+  const TimeDependence dependence = time_dependence(system, equations);
+  const std::vector<double> parameters = initial_state(system, sets).parameters;
   if (equilibria) {
-    const auto found =
-        find_equilibria(system, compiled, given, initial_state(system, sets).parameters,
-                        {.starts = c.starts, .cyclic = c.cyclic});
+    expect_equilibria_exist(system, dependence);
+    const auto found = find_equilibria(system, compiled, given, parameters,
+                                       {.starts = c.starts, .cyclic = c.cyclic});
     out << (c.format == "json" ? equilibria_json(system, found)
                                : equilibria_text(system, found, c.starts));
     return;
   }
-  const OperatingPoint point =
-      operating_point(system, compiled, given, initial_state(system, sets).parameters);
+  const std::optional<DrivePeriod> drive =
+      drive_of(system, compiled, dependence, parameters, period_given(c));
+  const OperatingPoint point = operating_point(system, compiled, given, parameters);
+  if (drive) {
+    write_periodic(out, command, c, system, compiled, point, *drive);
+    return;
+  }
   const Linearization linearization = linearize(system, compiled, point);
   const bool modes = command == "modes";
   const ModeAnalysis analysis = modes ? analyse_modes(linearization) : ModeAnalysis{};
@@ -187,7 +288,17 @@ int run_analysis_commands(const AnalysisCommands& c) {
     const System& system = model.system;
     const auto sets = parameter_sets(system, c.sets);
     const std::vector<GivenValue> given = parse_given_values(system, c.at);
-    const CompiledSystem compiled(system, lagrange_equations(system));
+    const EquationsOfMotion equations = lagrange_equations(system);
+    const CompiledSystem compiled(system, equations);
+    const TimeDependence dependence = time_dependence(system, equations);
+    if (dependence.depends) {
+      // a dependence that is not periodic is refused once, not at every value
+      if (!dependence.not_periodic.empty() && !period_given(c)) {
+        drive_period(system, compiled, dependence, initial_state(system, sets).parameters);
+      }
+      return run_floquet_sweep(c, system, compiled, dependence, given, sets);
+    }
+    drive_of(system, compiled, dependence, {}, period_given(c));  // refuses a --period
     return run_sweep(c, system, compiled, given, sets);
   }
   write_analysis(std::cout,
