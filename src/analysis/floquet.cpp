@@ -5,9 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "reduced_system.hpp"
+#include "motion.hpp"
 #include "semisimple.hpp"
-#include "unidyn/integrate/dormand_prince_853.hpp"
 #include "unidyn/numeric/number_text.hpp"
 
 namespace unidyn {
@@ -22,59 +21,8 @@ namespace {
 
 // |μ| this close to 1 is on the unit circle; multipliers this close are one.
 constexpr double kOnCircle = 1e-6;
-// The motion and Φ are integrated to this relative and absolute error per step.
-constexpr double kTolerance = 1e-12;
 // The motion must come back to the point to this fraction of its size, times Φ's growth.
 constexpr double kReturn = 1e-8;
-
-// The motion from the point and Φ over [t0, t0 + T], and the influence of each state on each
-// other along it: max |F(i, k)| / max |F| over every evaluation.
-struct VariationalSolution {
-  VectorXd q, qdot;  // at t0 + T
-  MatrixXd monodromy, influence;
-  std::size_t steps = 0;
-};
-
-VariationalSolution integrate_variational(const CompiledSystem& compiled,
-                                          const OperatingPoint& point, const Choice& choice,
-                                          Index states, double period) {
-  const auto n = static_cast<Index>(compiled.coordinate_count());
-  VariationalSolution out;
-  out.influence = MatrixXd::Zero(states, states);
-  CompiledSystemData data = compiled.make_data();
-  data.active = point.active;
-  OperatingPoint here = point;
-  // y = (q, q̇, Φ column by column)
-  const auto rhs = [&](double t, const VectorXd& y, VectorXd& dydt) {
-    here.t = t;
-    here.q = y.head(n);
-    here.qdot = y.segment(n, n);
-    compiled.solve(t, here.q, here.qdot, here.parameters, here.qddot, here.lambda, data);
-    const MatrixXd F = reduced_system(compiled, here, &choice).F;
-    const double scale = largest(F);
-    if (scale > 0.0) out.influence = out.influence.cwiseMax(F.cwiseAbs() / scale);
-    dydt.head(n) = here.qdot;
-    dydt.segment(n, n) = here.qddot;
-    Eigen::Map<MatrixXd>(dydt.data() + 2 * n, states, states) =
-        F * Eigen::Map<const MatrixXd>(y.data() + 2 * n, states, states);
-  };
-  DormandPrinceOptions options = DormandPrinceOptions::dop853();
-  options.rtol = kTolerance;
-  options.atol = kTolerance;
-  options.max_steps = 1000000;
-  DormandPrince853 stepper(rhs, options);
-  VectorXd y0(2 * n + states * states);
-  y0 << point.q, point.qdot, MatrixXd::Identity(states, states).reshaped();
-  const double t_end = point.t + period;
-  stepper.initialize(point.t, y0);
-  while (stepper.t() != t_end) stepper.step(t_end);
-  const VectorXd& y = stepper.y();
-  out.q = y.head(n);
-  out.qdot = y.segment(n, n);
-  out.monodromy = Eigen::Map<const MatrixXd>(y.data() + 2 * n, states, states);
-  out.steps = stepper.stats().accepted_steps;
-  return out;
-}
 
 // The kept states' values (independent coordinates, then independent rates) at (q, q̇).
 VectorXd kept_values(const Linearization& L, const Choice& choice, const VectorXd& q,
@@ -105,12 +53,18 @@ PeriodicLinearization linearize_periodic(const System& system, const CompiledSys
   out.t0 = point.t;
   const ReducedSystem at = reduced_system(compiled, point, nullptr);
   const Index states = at.F.rows();
-  const VariationalSolution motion =
-      integrate_variational(compiled, point, at.choice, states, period.period);
+  // The motion and Φ over one period, and the influence of each state on each other along it:
+  // max |F(i, k)| / max |F| over every evaluation.
+  MatrixXd influence = MatrixXd::Zero(states, states);
+  const MotionSolution motion = integrate_motion(
+      compiled, point, at.choice, states, period.period, [&](double, const MatrixXd& F) {
+        const double scale = largest(F);
+        if (scale > 0.0) influence = influence.cwiseMax(F.cwiseAbs() / scale);
+      });
   out.steps = motion.steps;
 
   // The ignorable coordinates: nothing along the period depends on them, nor near the point.
-  std::vector<MatrixXd> samples{motion.influence};
+  std::vector<MatrixXd> samples{influence};
   if (const auto near = nearby_state(system, compiled, point, at)) {
     samples.push_back(reduced_system(compiled, *near, &at.choice).F);
   } else {

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "reduced_system.hpp"
+#include "steadiness.hpp"
 #include "unidyn/numeric/number_text.hpp"
 
 namespace unidyn {
@@ -14,44 +15,6 @@ using Eigen::Index;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 using namespace detail;
-
-namespace {
-
-// The equations at the point must not change with t: linearised at one instant, a driven system
-// would be frozen there (a pendulum on a vibrating pivot is not the pendulum at the pivot's
-// position at t = 0). ∂q̈/∂t = 0 at the instant itself does not show it (cos Ωt at t = 0), so q̈
-// and F are compared at three more instants, apart by amounts no period divides them all by.
-void expect_the_same_at_other_instants(const CompiledSystem& compiled, const OperatingPoint& point,
-                                       const ReducedSystem& at, double acceleration_tolerance,
-                                       const std::vector<std::string>& names) {
-  const double scale = std::max(largest(at.F), 1e-300);
-  for (const double later : {0.7236067977499790, 2.6457513110645906, 9.8696044010893586}) {
-    OperatingPoint then = point;
-    then.t = point.t + later;
-    CompiledSystemData data = compiled.make_data();
-    data.active = point.active;
-    compiled.solve(then.t, then.q, then.qdot, then.parameters, then.qddot, then.lambda, data);
-    const ReducedSystem there = reduced_system(compiled, then, &at.choice);
-    std::string what;
-    for (const Index i : at.choice.independent_u) {
-      if (std::abs(then.qddot[i] - point.qddot[i]) > acceleration_tolerance) {
-        what = "the acceleration of " + names[static_cast<std::size_t>(i)];
-      }
-    }
-    if (what.empty() && largest(there.F - at.F) > kNegligible * scale) {
-      what = "the linearised equations";
-    }
-    if (what.empty()) continue;
-    throw NotAnOperatingPoint(
-        "the equations of motion depend on t at the point (" + what + " at t = " +
-        detail::to_short_text(then.t) + " differs from t = " + detail::to_short_text(point.t) +
-        "): linearised at one instant, the motion would be frozen there. A driven system's point "
-        "is analysed over a period of the drive (Floquet: `unidyn modes`, when the dependence on t "
-        "is periodic)");
-  }
-}
-
-}  // namespace
 
 Linearization linearize(const System& system, const CompiledSystem& compiled,
                         const OperatingPoint& point) {
@@ -103,7 +66,8 @@ Linearization linearize(const System& system, const CompiledSystem& compiled,
                                 name + " does): it is not an equilibrium or a steady motion");
     }
   }
-  expect_the_same_at_other_instants(compiled, point, at, acceleration_tolerance, names);
+  expect_the_same_at_other_instants(compiled, point, at, out.kept, acceleration_tolerance, names);
+  expect_steady_along_the_motion(compiled, point, at, out.kept, names);
 
   // A unilateral contact that holds must push (λ ≥ 0, integrate/contacts.hpp): one that would
   // pull is lost at once.

@@ -20,7 +20,9 @@ constexpr long long kLargestDenominator = 1000;
 // How close a ratio must be to its fraction.
 constexpr double kRatioTolerance = 1e-12;
 
-// An entry of the equations and what it belongs to ("the equation of phi", "constraint 'rod'").
+// An entry of the equations and what it belongs to ("the equation of phi", "constraint 'rod'"): M,
+// f and the constraint rows A, e, b. Not Ψ: its t enters the motion through e = ∂Ψ/∂t (a coordinate
+// turned at a constant rate, Ψ = φ − Ωt, has e = −Ω and equations that do not change with t).
 struct Entry {
   Expr value;
   std::string where;
@@ -39,7 +41,6 @@ std::vector<Entry> entries(const System& system, const EquationsOfMotion& eq) {
     for (std::size_t j = 0; j < q.size(); ++j) out.push_back({eq.constraint_matrix(k, j), where});
     out.push_back({eq.constraint_velocity_term[k], where});
     out.push_back({eq.constraint_bias[k], where});
-    out.push_back({eq.constraint_position[k], where});
   }
   return out;
 }
@@ -113,14 +114,17 @@ bool repeats_after(const CompiledSystem& compiled, const std::vector<double>& pa
     inputs.insert(inputs.end(), q.begin(), q.end());
     inputs.insert(inputs.end(), qdot.begin(), qdot.end());
     inputs.insert(inputs.end(), parameters.begin(), parameters.end());
+    // M, f, A, b; A, e (not Ψ, which may grow with t: time_dependence)
+    const std::size_t rows = compiled.constraint_count() * (compiled.coordinate_count() + 1);
     for (const Tape* tape : {&compiled.dynamics(), &compiled.constraint_tape()}) {
       inputs[0] = t;
       const std::vector<double> now = tape->evaluate(inputs);
       inputs[0] = t + period;
       const std::vector<double> later = tape->evaluate(inputs);
+      const std::size_t compared = tape == &compiled.dynamics() ? now.size() : rows;
       double scale = 1.0;
-      for (const double v : now) scale = std::max(scale, std::abs(v));
-      for (std::size_t k = 0; k < now.size(); ++k) {
+      for (std::size_t k = 0; k < compared; ++k) scale = std::max(scale, std::abs(now[k]));
+      for (std::size_t k = 0; k < compared; ++k) {
         // outside the model's domain (a square root of a negative number) nothing is compared
         if (!std::isfinite(now[k]) || !std::isfinite(later[k])) continue;
         if (std::abs(now[k] - later[k]) > 1e-9 * scale) return false;
@@ -145,7 +149,7 @@ TimeDependence time_dependence(const System& system, const EquationsOfMotion& eq
     }
   }
   if (!out.depends) out.frequencies.clear();
-  // each function once, in the order first met
+  // each function once
   std::vector<TimeDependence::Frequency> unique;
   for (const TimeDependence::Frequency& f : out.frequencies) {
     if (std::none_of(unique.begin(), unique.end(),
@@ -153,6 +157,9 @@ TimeDependence time_dependence(const System& system, const EquationsOfMotion& eq
       unique.push_back(f);
     }
   }
+  // in the order of their texts: GiNaC's order of terms changes from run to run
+  std::sort(unique.begin(), unique.end(),
+            [](const auto& a, const auto& b) { return a.source < b.source; });
   out.frequencies = std::move(unique);
   return out;
 }
@@ -171,7 +178,7 @@ std::optional<DrivePeriod> drive_period(const System& system, const CompiledSyst
                         ": the equations of motion are not the same at t and t + " +
                         detail::to_short_text(*given) + " (compared at random states)");
     }
-    return DrivePeriod{*given, "given (--period)"};
+    return DrivePeriod{*given, "given (--period)", true};
   }
   if (!dependence.not_periodic.empty()) {
     throw NotPeriodic("the equations of motion depend on t, and not periodically: t appears in " +

@@ -17,6 +17,7 @@
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/integrate/simulation.hpp"
 #include "unidyn/io/csv.hpp"
+#include "unidyn/numeric/number_text.hpp"
 #include "unidyn/sweep/manifest.hpp"
 
 namespace unidyn::cli {
@@ -98,8 +99,8 @@ int run_floquet_sweep(const AnalysisCommands& c, const System& system,
   }
   csv.close();
   fmt::print(stderr,
-             "the equations depend on t periodically: Floquet multipliers over one period at each "
-             "value; stability changes where the largest |mu| crosses 1\n");
+             "a periodic motion: Floquet multipliers over one period at each value; stability "
+             "changes where the largest |mu| crosses 1\n");
   print_boundaries(range.parameter, sweep.boundaries,
                    "a multiplier leaves the unit circle above it (|mu| > 1)",
                    "every multiplier is back on or inside the unit circle above it");
@@ -141,20 +142,16 @@ int run_sweep(const AnalysisCommands& c, const System& system, const CompiledSys
   return failures == 0 ? 0 : 1;
 }
 
-// The period of equations that depend on t (nothing for those that do not, or whose drive stands
-// still at these values). Throws std::invalid_argument for a --period given to equations that do
-// not depend on t, NotPeriodic for a dependence that is not periodic.
+// The period of the motion through the point: the one given (--period: equations that change
+// with t must repeat after it; any motion through the point must come back after it, which
+// linearize_periodic checks), else that of equations that depend on t periodically; nothing for
+// equations that do not depend on t (or whose drive stands still at these values). Throws
+// NotPeriodic for a dependence that is not periodic.
 std::optional<DrivePeriod> drive_of(const System& system, const CompiledSystem& compiled,
                                     const TimeDependence& dependence,
                                     const std::vector<double>& parameters,
                                     std::optional<double> period) {
-  if (!dependence.depends) {
-    if (period) {
-      throw std::invalid_argument("--period: the equations of motion of " + system.name +
-                                  " do not depend on t, so there is no period to give");
-    }
-    return std::nullopt;
-  }
+  if (!dependence.depends && !period) return std::nullopt;
   return drive_period(system, compiled, dependence, parameters, period);
 }
 
@@ -199,8 +196,9 @@ void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
         ->capture_default_str();
     c.period_options.push_back(command->add_option(
         "--period", c.period,
-        "T: the period of equations that depend on t (found from their sines and cosines of "
-        "multiples of t when not given), checked on the equations"));
+        "T: the period of the motion through the point, analysed over it by Floquet's theory "
+        "(for equations that depend on t periodically it is found from their sines and "
+        "cosines of multiples of t when not given)"));
   };
   c.linearize = app.add_subcommand(
       "linearize", "Linearise the equations of motion about an equilibrium or a steady motion");
@@ -291,14 +289,17 @@ int run_analysis_commands(const AnalysisCommands& c) {
     const EquationsOfMotion equations = lagrange_equations(system);
     const CompiledSystem compiled(system, equations);
     const TimeDependence dependence = time_dependence(system, equations);
-    if (dependence.depends) {
+    if (const auto period = period_given(c); period && !(std::isfinite(*period) && *period > 0)) {
+      throw std::invalid_argument("--period " + detail::to_short_text(*period) +
+                                  ": expected a positive number of seconds");
+    }
+    if (dependence.depends || period_given(c)) {
       // a dependence that is not periodic is refused once, not at every value
       if (!dependence.not_periodic.empty() && !period_given(c)) {
         drive_period(system, compiled, dependence, initial_state(system, sets).parameters);
       }
       return run_floquet_sweep(c, system, compiled, dependence, given, sets);
     }
-    drive_of(system, compiled, dependence, {}, period_given(c));  // refuses a --period
     return run_sweep(c, system, compiled, given, sets);
   }
   write_analysis(std::cout,

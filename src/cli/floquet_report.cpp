@@ -33,7 +33,9 @@ std::string periodic_text(const System& system, const OperatingPoint& point,
                           const PeriodicLinearization& P, const FloquetAnalysis* floquet) {
   const Linearization& L = P.at_start;
   std::string out = operating_point_text(system, point, L);
-  out += "the equations depend on t periodically, " + period_text(P) +
+  out += (P.period.given ? "the motion through the point analysed as periodic, "
+                         : "the equations depend on t periodically, ") +
+         period_text(P) +
          ": the point is a periodic motion, and its stability is Floquet's, over one period from "
          "t = " +
          number(P.t0) + "\n";

@@ -18,7 +18,9 @@ TEST(AnalysisCommands, SameOutputOnEveryRun) {
            "linearize torque-free-body --at 'der(psi)=5' --format json", "equilibria rotating-hoop",
            "equilibria double-pendulum --format json",
            "equilibria smooth-cone --cyclic theta --at 'p(theta)=h' --format json",
-           "linearize rolling-disk --at 'theta=pi/2' 'der(phi)=10' --format json"}) {
+           "linearize rolling-disk --at 'theta=pi/2' 'der(phi)=10' --format json",
+           "modes driven-pendulum --at phi=0 --format json",
+           "modes driven-pendulum --at phi=0 --format latex"}) {
     const Outcome first = run(command);
     ASSERT_EQ(first.status, 0) << command << ": " << first.err;
     const Outcome again = run(command, "UNIDYN_RANDOM_LAYOUT=1");
@@ -41,12 +43,42 @@ TEST(AnalysisCommands, BadInputRefused) {
         "equilibria smooth-cone --at 'p(theta)=5'", "equilibria smooth-cone --cyclic nope",
         "equilibria smooth-cone --cyclic theta --at 'p(theta)=5' 'der(theta)=1'",
         "linearize smooth-cone --at 'p(theta)=5'", "equilibria block-incline",
-        "linearize particle-leaving-sphere --at z=-1"}) {
+        "linearize particle-leaving-sphere --at z=-1", "equilibria driven-pendulum",
+        "modes double-pendulum --at theta1=0 theta2=0 --period 0",
+        "modes driven-pendulum --at phi=0 --period 0.01", "modes switching-constraint --at x=0",
+        "modes driven-pendulum --at phi=0 --sweep Omega=100:200:3 --period -1"}) {
     const Outcome r = run(command);
     EXPECT_EQ(r.status, 2) << command << ": " << r.err;
     EXPECT_TRUE(contains(r.err, "unidyn: error:")) << command << ": " << r.err;
     EXPECT_EQ(r.out, "") << command;
   }
+}
+
+// A pendulum on a vibrating pivot (issue 34's case, Kapitza): at 0.8 of the boundary the inverted
+// position falls (Floquet: a multiplier outside the unit circle), above it it stands, and the sweep
+// finds the boundary at sqrt(4g/(l |a0(2a/l)|)) = 198.199059109 (a0 of the Mathieu equation:
+// tests/analysis/floquet.cpp checks it against Hill's determinant).
+TEST(AnalysisCommands, DrivenPendulumByFloquet) {
+  const Outcome falls = run("modes driven-pendulum --at phi=0 --set Omega=158");
+  ASSERT_EQ(falls.status, 0) << falls.err;
+  EXPECT_TRUE(contains(falls.out, "the equations depend on t periodically, T = 0.0397669956151 s"))
+      << falls.out;
+  EXPECT_TRUE(contains(falls.out, "monodromy matrix Phi")) << falls.out;
+  EXPECT_TRUE(contains(falls.out, "stability: unstable: multipliers outside the unit circle"))
+      << falls.out;
+  const Outcome stands = run("modes driven-pendulum --at phi=0 --set Omega=250");
+  EXPECT_TRUE(contains(stands.out, "stability: linearly stable")) << stands.out;
+  const Outcome linear = run("linearize driven-pendulum --at phi=0");
+  ASSERT_EQ(linear.status, 0) << linear.err;
+  EXPECT_TRUE(contains(linear.out, "x' = A(t) x, A(t + T) = A(t)")) << linear.out;
+  EXPECT_FALSE(contains(linear.out, "multipliers")) << linear.out;
+  const Outcome sweep = run("modes driven-pendulum --at phi=0 --sweep Omega=150:260:12");
+  ASSERT_EQ(sweep.status, 0) << sweep.err;
+  EXPECT_TRUE(contains(sweep.err, "stability changes at Omega = 198.1990591")) << sweep.err;
+  EXPECT_TRUE(sweep.out.starts_with("Omega,period,largest_modulus,growth,re(mu1),im(mu1)"))
+      << sweep.out;
+  const Outcome frozen = run("equilibria driven-pendulum");
+  EXPECT_TRUE(contains(frozen.err, "depend on t")) << frozen.err;
 }
 
 // Fig. 2.9: the circular orbit on the smooth cone at the momentum h, with its rate, stable by

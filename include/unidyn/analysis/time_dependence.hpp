@@ -3,9 +3,10 @@
 // varying rate) is rheonomic, and its rest states are not equilibria of frozen equations but
 // periodic motions, whose stability is Floquet's (analysis/floquet.hpp).
 //
-// The equations depend on t when some entry of M, f, A, b, e or Ψ has a derivative along t that
-// is not identically zero (symbolic/zero_test.hpp: a hoop turning at a constant rate Ω has Ω t in
-// its positions, and equations that do not change with t). They are periodic when every t is
+// The equations depend on t when some entry of M, f, A, b or e has a derivative along t that is not
+// identically zero (symbolic/zero_test.hpp: a hoop turning at a constant rate Ω has Ω t in its
+// positions, and equations that do not change with t). Ψ's own t enters the motion through
+// e = ∂Ψ/∂t: a coordinate turned at a constant rate, Ψ = φ − Ωt, leaves the equations as they are. They are periodic when every t is
 // inside sin, cos or tan of ω t + c, ω a number or an expression in the parameters: with the
 // frequencies ω_k at the parameters' values commensurate (each ratio ω_k/ω_1 a fraction p/q,
 // q ≤ 1000, to 1e-12), the period is T = 2π/ω₀, ω₀ = |ω_1| gcd(n_k)/L for ω_k = |ω_1| n_k/L.
@@ -44,6 +45,7 @@ TimeDependence time_dependence(const System& system, const EquationsOfMotion& eq
 struct DrivePeriod {
   double period = 0.0;
   std::string how;
+  bool given = false;  // by the user (--period), not found in the equations
 };
 
 // The period of the equations at `parameters`: `given` (checked on the compiled equations), or
