@@ -146,11 +146,13 @@ PYBIND11_MODULE(_unidyn, module) {
       .def(
           "_analysis",
           [](const PythonModel& m, const std::string& command, const std::vector<std::string>& at,
-             const Settings& set, std::size_t starts, const std::vector<std::string>& cyclic) {
+             const Settings& set, std::size_t starts, const std::vector<std::string>& cyclic,
+             std::optional<double> period) {
             py::gil_scoped_release unlocked;
-            return m.analysis_json(command, at, set, starts, cyclic);
+            return m.analysis_json(command, at, set, starts, cyclic, period);
           },
-          py::arg("command"), py::arg("at"), py::arg("set"), py::arg("starts"), py::arg("cyclic"))
+          py::arg("command"), py::arg("at"), py::arg("set"), py::arg("starts"), py::arg("cyclic"),
+          py::arg("period") = std::nullopt)
       .def(
           "_report",
           [](const PythonModel& m, const std::string& path, std::optional<double> t_end,

@@ -179,9 +179,10 @@ void PythonModel::rhs(const double* q, const double* qdot, std::size_t count, do
 std::string PythonModel::analysis_json(const std::string& command,
                                        const std::vector<std::string>& at,
                                        const std::vector<std::pair<std::string, double>>& set,
-                                       std::size_t starts,
-                                       const std::vector<std::string>& cyclic) const {
+                                       std::size_t starts, const std::vector<std::string>& cyclic,
+                                       std::optional<double> period) const {
   cli::AnalysisCommands c;
+  c.period = period;
   c.at = at;
   c.sets = setting_texts(set);
   c.format = "json";

@@ -15,6 +15,7 @@
 
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -74,10 +75,11 @@ class PythonModel {
            const std::vector<std::pair<std::string, double>>& set, double* qddot,
            double* lambda) const;
 
-  // `unidyn linearize|modes|equilibria MODEL --at ... --set ... --format json`.
+  // `unidyn linearize|modes|equilibria MODEL --at ... --set ... [--period T] --format json`.
   std::string analysis_json(const std::string& command, const std::vector<std::string>& at,
                             const std::vector<std::pair<std::string, double>>& set,
-                            std::size_t starts, const std::vector<std::string>& cyclic) const;
+                            std::size_t starts, const std::vector<std::string>& cyclic,
+                            std::optional<double> period) const;
 
   // `unidyn report MODEL -o PATH`; returns what the command prints.
   std::string report(const std::string& path, const RunRequest& request) const;

@@ -39,3 +39,17 @@ def test_report_writes_the_page(tmp_path):
     said = model.report(page, t_end=0.5)
     assert said.startswith("report of Bead on a rotating hoop written to")
     assert page.read_text().startswith("<!DOCTYPE html>")
+
+
+def test_a_driven_point_is_a_periodic_motion():
+    # Kapitza's pendulum: the inverted position falls at Omega = 158 and stands at 250 (the
+    # boundary, 198.2, is checked against the Mathieu equation in tests/analysis/floquet.cpp);
+    # the same analysis over a period given for a pivot turned by a crank
+    model = unidyn.load("driven-pendulum")
+    falls = model.modes(at={"phi": 0}, set={"Omega": 158})
+    assert falls["stability"] == "unstable"
+    assert abs(falls["period"]["T"] - 2 * math.pi / 158) < 1e-15
+    assert max(m["modulus"] for m in falls["multipliers"]) > 1.1
+    stands = model.modes(at={"phi": 0}, set={"Omega": 250})
+    assert stands["stability"] == "linearly stable"
+    assert len(model.linearize(at={"phi": 0})["monodromy"]) == 2

@@ -117,13 +117,18 @@ class Model:
         return self._model.rhs(np.asarray(q, dtype=float), np.asarray(qd, dtype=float), float(t),
                                _settings(set))
 
-    def linearize(self, at, set=None):
-        """`unidyn linearize --format json`, as a dict."""
-        return json.loads(self._model._analysis("linearize", _points(at), _settings(set), 0, []))
+    def linearize(self, at, set=None, period=None):
+        """`unidyn linearize --format json`, as a dict. A driven system's point (equations that
+        depend on t periodically, or period=T given) is a periodic motion: the dict has its
+        "period", "A_at_t0" and "monodromy" in place of "A"."""
+        return json.loads(self._model._analysis("linearize", _points(at), _settings(set), 0, [],
+                                                _period(period)))
 
-    def modes(self, at, set=None):
-        """`unidyn modes --format json`, as a dict (eigenvalues, shapes, stability)."""
-        return json.loads(self._model._analysis("modes", _points(at), _settings(set), 0, []))
+    def modes(self, at, set=None, period=None):
+        """`unidyn modes --format json`, as a dict (eigenvalues, shapes, stability); for a
+        periodic motion the Floquet "multipliers" (re, im, modulus, exponent_re, exponent_im)."""
+        return json.loads(self._model._analysis("modes", _points(at), _settings(set), 0, [],
+                                                _period(period)))
 
     def equilibria(self, at=None, set=None, starts=200, cyclic=()):
         """`unidyn equilibria --format json`, as a dict."""
@@ -133,6 +138,11 @@ class Model:
     def report(self, path, t_end=None, output_step=None, method=None, rtol=None, set=None):
         """`unidyn report -o PATH`: the HTML page; returns the line the command prints."""
         return self._model._report(str(path), t_end, output_step, method, rtol, _settings(set))
+
+
+def _period(period):
+    """--period T, or None."""
+    return None if period is None else float(period)
 
 
 def load(source):

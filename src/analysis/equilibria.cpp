@@ -10,6 +10,7 @@
 #include "energy_minimum.hpp"
 #include "steady_balance.hpp"
 #include "tape_derivatives.hpp"
+#include "unidyn/analysis/time_dependence.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {
@@ -211,6 +212,15 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
                                         const std::vector<double>& parameters,
                                         const EquilibriumSearch& search) {
   expect_smooth_contacts(system, parameters);
+  // equations that change with t have no equilibria to find at one instant
+  if (changes_with_t(compiled, parameters)) {
+    throw std::invalid_argument(
+        "the equations of motion of " + system.name +
+        " depend on t (a moving support or a driving force), so a state at rest at one instant "
+        "is not an equilibrium of the motion; the states the drive keeps at rest are periodic "
+        "motions: analyse one with `unidyn modes MODEL --at NAME=VALUE` (Floquet multipliers "
+        "over a period of the drive)");
+  }
   const auto n = static_cast<Index>(compiled.coordinate_count());
   const auto name_of = [&](Index i) -> const std::string& {
     return system.coordinates()[static_cast<std::size_t>(i)].name;

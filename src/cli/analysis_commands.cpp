@@ -71,10 +71,7 @@ void print_boundaries(const std::string& parameter,
 
 // The --period given, if any.
 std::optional<double> period_given(const AnalysisCommands& c) {
-  for (const CLI::Option* option : c.period_options) {
-    if (option->count() > 0) return c.period;
-  }
-  return std::nullopt;
+  return c.period;
 }
 
 // modes --sweep of a driven system: the Floquet multipliers, one CSV row per value.
@@ -155,17 +152,6 @@ std::optional<DrivePeriod> drive_of(const System& system, const CompiledSystem& 
   return drive_period(system, compiled, dependence, parameters, period);
 }
 
-// equilibria: equations that change with t have no equilibria to search for at one instant.
-void expect_equilibria_exist(const System& system, const TimeDependence& dependence) {
-  if (!dependence.depends) return;
-  throw std::invalid_argument(
-      "the equations of motion of " + system.name +
-      " depend on t (a moving support or a driving force), so a state at rest at one instant is "
-      "not an equilibrium of the motion; the states the drive keeps at rest are periodic "
-      "motions: analyse one with `unidyn modes MODEL --at NAME=VALUE` (Floquet multipliers over "
-      "a period of the drive)");
-}
-
 // linearize, modes of a periodic motion: A(t0), the monodromy matrix, with modes the multipliers.
 void write_periodic(std::ostream& out, const std::string& command, const AnalysisCommands& c,
                     const System& system, const CompiledSystem& compiled,
@@ -194,11 +180,11 @@ void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
     command->add_option("--format", c.format, "text | latex | json")
         ->check(CLI::IsMember({"text", "latex", "json"}))
         ->capture_default_str();
-    c.period_options.push_back(command->add_option(
-        "--period", c.period,
+    command->add_option_function<double>(
+        "--period", [&c](const double& T) { c.period = T; },
         "T: the period of the motion through the point, analysed over it by Floquet's theory "
         "(for equations that depend on t periodically it is found from their sines and "
-        "cosines of multiples of t when not given)"));
+        "cosines of multiples of t when not given)");
   };
   c.linearize = app.add_subcommand(
       "linearize", "Linearise the equations of motion about an equilibrium or a steady motion");
@@ -246,7 +232,6 @@ void write_analysis(std::ostream& out, const std::string& command, const Analysi
   const TimeDependence dependence = time_dependence(system, equations);
   const std::vector<double> parameters = initial_state(system, sets).parameters;
   if (equilibria) {
-    expect_equilibria_exist(system, dependence);
     const auto found = find_equilibria(system, compiled, given, parameters,
                                        {.starts = c.starts, .cyclic = c.cyclic});
     out << (c.format == "json" ? equilibria_json(system, found)

@@ -18,10 +18,9 @@ struct AnalysisCommands {
   std::vector<std::string> at;    // NAME=VALUE of the operating point
   std::vector<std::string> sets;  // NAME=NUMBER of parameters
   std::string format = "text";
-  std::string sweep;                         // modes: PARAM=FROM:TO:COUNT
-  std::string output;                        // modes --sweep: the CSV file
-  std::vector<CLI::Option*> period_options;  // linearize's and modes' --period
-  double period = 0.0;              // linearize, modes: --period T of a driven system (0: found)
+  std::string sweep;                // modes: PARAM=FROM:TO:COUNT
+  std::string output;               // modes --sweep: the CSV file
+  std::optional<double> period;     // linearize, modes: --period T (none: found, if any)
   std::size_t starts = 200;         // equilibria: the starting points
   std::vector<std::string> cyclic;  // equilibria: the cyclic coordinates
 };

@@ -9,8 +9,10 @@
 #include <sstream>
 
 #include "analysis_report.hpp"
+#include "floquet_report.hpp"
 #include "simulation_setup.hpp"
 #include "unidyn/analysis/exact_state_matrix.hpp"
+#include "unidyn/analysis/time_dependence.hpp"
 #include "unidyn/equations/equivalence.hpp"
 #include "unidyn/equations/newton.hpp"
 #include "unidyn/numeric/constraint_forces.hpp"
@@ -31,20 +33,44 @@ std::string check_text(const System& system, const EquationsOfMotion& lagrange) 
       report.symbolic_zero ? "yes" : "NO", report.states, report.numeric_relative_residual);
 }
 
+// A LaTeX text without its comment lines (the page shows what they say as tables).
+std::string without_comments(const std::string& latex) {
+  std::string out;
+  std::istringstream lines(latex);
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.starts_with("%")) out += line + "\n";
+  }
+  return out;
+}
+
 // The linearisation about a point and its modes, for the page: ẋ = A x as `modes --format latex`
-// writes it (its comments, which the page shows as a table, left out).
+// writes it.
 ReportOperatingPoint linearised(const std::string& label, const System& system,
                                 const EquationsOfMotion& lagrange, const OperatingPoint& point,
                                 const Linearization& linearization,
                                 const std::vector<GivenValue>& given) {
   const ExactLinearization exact{exact_second_order(system, lagrange, given),
                                  exact_state_matrix(system, lagrange, given, point, linearization)};
-  std::string latex;
-  std::istringstream lines(analysis_latex(system, point, linearization, nullptr, exact));
-  for (std::string line; std::getline(lines, line);) {
-    if (!line.starts_with("%")) latex += line + "\n";
-  }
-  return {label, latex, linearization.coordinates, analyse_modes(linearization)};
+  return {label,
+          without_comments(analysis_latex(system, point, linearization, nullptr, exact)),
+          linearization.coordinates,
+          analyse_modes(linearization),
+          std::nullopt,
+          0.0};
+}
+
+// A driven system's periodic motion through a point, for the page: ẋ = A(t) x and the monodromy
+// matrix as `modes --format latex` writes them, the Floquet multipliers.
+ReportOperatingPoint periodic(const std::string& label, const System& system,
+                              const CompiledSystem& compiled, const OperatingPoint& point,
+                              const DrivePeriod& drive) {
+  const PeriodicLinearization P = linearize_periodic(system, compiled, point, drive);
+  return {label,
+          without_comments(periodic_latex(system, point, P, nullptr)),
+          P.at_start.coordinates,
+          {},
+          analyse_floquet(P),
+          drive.period};
 }
 
 // The point the page linearises about: the one given with --at (bad input when it is not an
@@ -52,12 +78,30 @@ ReportOperatingPoint linearised(const std::string& label, const System& system,
 // the first equilibrium found. Without one, why not.
 void add_operating_point(ReportModel& report, const ModelCommands& c, const System& system,
                          const CompiledSystem& compiled, const SimulationStart& start) {
+  // a driven system's points are periodic motions, over the period of its drive
+  const TimeDependence dependence = time_dependence(system, report.equations);
+  std::optional<DrivePeriod> drive;
+  if (dependence.depends) {
+    try {
+      drive = drive_period(system, compiled, dependence, start.parameters);
+    } catch (const NotPeriodic& e) {
+      if (!c.at.empty()) throw;
+      report.no_operating_point = e.what();
+      return;
+    }
+  }
+  const auto about = [&](const std::string& label, const OperatingPoint& point,
+                         const std::vector<GivenValue>& given) {
+    return drive ? periodic(label, system, compiled, point, *drive)
+                 : linearised(label, system, report.equations, point,
+                              linearize(system, compiled, point), given);
+  };
   if (!c.at.empty()) {
     const std::vector<GivenValue> given = parse_given_values(system, c.at);
     const OperatingPoint point = operating_point(system, compiled, given, start.parameters);
-    report.operating_point = linearised(
-        "the operating point given: " + printable(fmt::format("{}", fmt::join(c.at, ", "))), system,
-        report.equations, point, linearize(system, compiled, point), given);
+    report.operating_point =
+        about("the operating point given: " + printable(fmt::format("{}", fmt::join(c.at, ", "))),
+              point, given);
     return;
   }
   std::vector<GivenValue> initial;
@@ -69,8 +113,7 @@ void add_operating_point(ReportModel& report, const ModelCommands& c, const Syst
   }
   try {
     const OperatingPoint point = operating_point(system, compiled, initial, start.parameters);
-    report.operating_point = linearised("the initial state", system, report.equations, point,
-                                        linearize(system, compiled, point), initial);
+    report.operating_point = about("the initial state", point, initial);
     return;
   } catch (const std::exception& e) {
     report.no_operating_point = std::string("the initial state is not one: ") + e.what();

@@ -26,6 +26,35 @@ std::string shape_json(const Mode& mode, const std::vector<std::string>& coordin
   return fmt::format("[{}]", fmt::join(out, ", "));
 }
 
+// A periodic motion: its period, each multiplier μ ("a±bi", six digits) with |μ| and the exponent
+// log(μ)/T, and the verdict.
+std::string floquet_json(const ReportOperatingPoint& point) {
+  const FloquetAnalysis& floquet = *point.floquet;
+  std::vector<std::string> multipliers;
+  // on the unit circle (within the verdict's tolerance) the exponent's real part is 0
+  const auto on_circle = [&](const FloquetMultiplier& m) {
+    return std::abs(std::abs(m.multiplier) - 1.0) <= floquet.tolerance;
+  };
+  for (const FloquetMultiplier& m : floquet.multipliers) {
+    const std::complex<double> exponent(0.0, m.exponent.imag());
+    const auto text = [](std::complex<double> z) {
+      return z.imag() == 0.0 ? fmt::format("{:.6g}", z.real())
+                             : fmt::format("{:.6g}{}{:.6g}i", z.real(), z.imag() < 0 ? "-" : "+",
+                                           std::abs(z.imag()));
+    };
+    multipliers.push_back(
+        "{\"multiplier\": " + unidyn::quoted(text(m.multiplier)) +
+        ", \"modulus\": " + page_number(std::abs(m.multiplier)) +
+        ", \"exponent\": " + unidyn::quoted(text(on_circle(m) ? exponent : m.exponent)) + "}");
+  }
+  return "{\"label\": " + unidyn::quoted(point.label) +
+         ", \"latex\": " + unidyn::quoted(point.latex) +
+         ", \"period\": " + page_number(point.period) + ", \"multipliers\": [" +
+         fmt::format("{}", fmt::join(multipliers, ",\n")) +
+         "], \"stability\": " + unidyn::quoted(to_string(floquet.verdict)) +
+         ", \"reason\": " + unidyn::quoted(floquet.reason) + "}";
+}
+
 }  // namespace
 
 std::string operating_point_json(const ReportModel& model) {
@@ -33,6 +62,7 @@ std::string operating_point_json(const ReportModel& model) {
     return "{\"none\": " + unidyn::quoted(model.no_operating_point) + "}";
   }
   const ReportOperatingPoint& point = *model.operating_point;
+  if (point.floquet) return floquet_json(point);
   std::vector<std::string> modes;
   const double tolerance = point.modes.tolerance;
   for (const Mode& mode : point.modes.modes) {

@@ -11,8 +11,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "unidyn/analysis/floquet.hpp"
 #include "unidyn/analysis/linearization.hpp"
 #include "unidyn/analysis/modes.hpp"
+#include "unidyn/analysis/time_dependence.hpp"
 #include "unidyn/equations/kane.hpp"
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/integrate/initial_state.hpp"
@@ -69,11 +71,29 @@ void write_atomically(const fs::path& path, const std::string& text) {
 
 // The modes of the manifest's operating point with a run's parameters: its verdict and
 // eigenvalues ("a±bi" each, separated by spaces), or why there are none.
+// A driven system's point (equations that depend on t periodically) gets its Floquet verdict and
+// multipliers ("multipliers: μ1 μ2 ..."), over the drive's period at the run's parameters.
 struct ModesAt {
   const System& system;
   const CompiledSystem& compiled;  // of Lagrange's equations, as the analysis commands use
   std::vector<GivenValue> given;
+  TimeDependence dependence;
 };
+
+// The Floquet verdict and multipliers of a periodic motion, as modes_fields writes them.
+std::string floquet_fields(const ModesAt& at, const OperatingPoint& point,
+                           const DrivePeriod& period) {
+  const FloquetAnalysis floquet =
+      analyse_floquet(linearize_periodic(at.system, at.compiled, point, period));
+  std::string values = "multipliers:";
+  for (const FloquetMultiplier& m : floquet.multipliers) {
+    const std::complex<double> mu = m.multiplier;
+    values += fmt::format(" {:.6g}", mu.real());
+    if (mu.imag() != 0.0)
+      values += fmt::format("{}{:.6g}i", mu.imag() < 0 ? "-" : "+", std::abs(mu.imag()));
+  }
+  return "," + csv_field(to_string(floquet.verdict)) + "," + csv_field(values);
+}
 std::string modes_fields(const ModesAt& at,
                          const std::vector<std::pair<std::string, double>>& sets) {
   try {
@@ -82,8 +102,13 @@ std::string modes_fields(const ModesAt& at,
     for (const auto& [name, value] : sets) {
       if (at.system.find_parameter(name)) parameters.emplace_back(name, value);
     }
-    const OperatingPoint point = operating_point(at.system, at.compiled, at.given,
-                                                 initial_state(at.system, parameters).parameters);
+    const std::vector<double> p = initial_state(at.system, parameters).parameters;
+    const OperatingPoint point = operating_point(at.system, at.compiled, at.given, p);
+    if (at.dependence.depends) {
+      if (const auto period = drive_period(at.system, at.compiled, at.dependence, p)) {
+        return floquet_fields(at, point, *period);
+      }
+    }
     const ModeAnalysis modes = analyse_modes(linearize(at.system, at.compiled, point));
     std::string values;
     for (const Mode& mode : modes.modes) {
@@ -164,8 +189,10 @@ ChunkReport run_sweep_rows(const SweepManifest& m, std::size_t first, std::size_
   std::optional<CompiledSystem> lagrange;
   std::optional<ModesAt> modes;
   if (!m.modes_at.empty()) {
-    lagrange.emplace(system, lagrange_equations(system));
-    modes.emplace(ModesAt{system, *lagrange, parse_given_values(system, m.modes_at)});
+    const EquationsOfMotion equations = lagrange_equations(system);
+    lagrange.emplace(system, equations);
+    modes.emplace(ModesAt{system, *lagrange, parse_given_values(system, m.modes_at),
+                          time_dependence(system, equations)});
   }
   fs::create_directories(directory);
   ChunkReport report;

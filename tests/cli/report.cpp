@@ -48,7 +48,9 @@ TEST_P(Report, DrawsItselfInChromium) {
       << "chromium is not installed: scripts/setup.sh test installs it";
   const std::string model = GetParam();
   const std::string page = temp_path(model + ".html");
-  const Outcome made = run("report " + model + " --t-end 2 -o '" + page + "'");
+  // the driven pendulum about its inverted position: a periodic motion (Floquet multipliers)
+  const std::string point = model == "driven-pendulum" ? " --at phi=0" : "";
+  const Outcome made = run("report " + model + point + " --t-end 2 -o '" + page + "'");
   ASSERT_EQ(made.status, 0) << made.out << made.err;
   EXPECT_TRUE(contains(made.out, "written to " + page)) << made.out;
   const std::string profile = temp_path("chromium-profile");
@@ -75,7 +77,8 @@ TEST_P(Report, DrawsItselfInChromium) {
   }
   // the constraint force on the pendulum's particle and on the disk as arrows (the top has no
   // constraints), the pendulum's sphere |r| = L drawn (report/constraint_surfaces.hpp)
-  EXPECT_EQ(count(result, "arrows"), model == "heavy-top" ? 0 : 1) << result;
+  EXPECT_EQ(count(result, "arrows"), model == "heavy-top" || model == "driven-pendulum" ? 0 : 1)
+      << result;
   EXPECT_EQ(count(result, "surfaces"), model == "spherical-pendulum-cartesian" ? 1 : 0) << result;
   // the modes of an operating point: the disk's first equilibrium (upright at rest: θ, ψ̇, θ̇,
   // φ̇, four eigenvalues, one of each complex pair listed); the top's Euler angles are singular
@@ -85,6 +88,10 @@ TEST_P(Report, DrawsItselfInChromium) {
   }
   if (model == "heavy-top") {
     EXPECT_EQ(count(result, "modes"), -1) << result;
+  }
+  // the driven pendulum's two multipliers in place of modes
+  if (model == "driven-pendulum") {
+    EXPECT_EQ(count(result, "modes"), 2) << result;
   }
   // each body turned as its Euler parameters say (to float precision: the page's data is float32)
   EXPECT_GE(value(result, "orientation_error"), 0.0) << result;
@@ -111,7 +118,7 @@ TEST_P(Report, DrawsItselfInChromium) {
 
 INSTANTIATE_TEST_SUITE_P(Bundled, Report,
                          testing::Values("spherical-pendulum-cartesian", "heavy-top",
-                                         "rolling-disk"),
+                                         "rolling-disk", "driven-pendulum"),
                          [](const auto& parameter) {
                            std::string name = parameter.param;
                            for (char& c : name) c = c == '-' ? '_' : c;

@@ -146,6 +146,20 @@ TEST(SweepRun, EachRunsModesAtTheOperatingPoint) {
             std::string::npos);
 }
 
+// A driven system's point is a periodic motion: its Floquet verdict and multipliers per run, over
+// the drive's period at the run's Omega (Kapitza's inverted pendulum: falls below Ω = 198.2,
+// stands above; tests/analysis/floquet.cpp checks the boundary against the Mathieu equation).
+TEST(SweepRun, ADrivenPointGetsItsFloquetMultipliers) {
+  Sweep s("driven-pendulum", {"Omega=150:250:2"}, 0.01);
+  s.manifest.modes_at = {"phi=0"};
+  std::ostringstream log;
+  run_sweep_rows(s.manifest, 0, 2, s.dir / "runs", log);
+  const std::string falls = read(result_path(s.dir / "runs", 0));
+  const std::string stands = read(result_path(s.dir / "runs", 1));
+  EXPECT_NE(falls.find(",unstable,multipliers: 1.21"), std::string::npos) << falls;
+  EXPECT_NE(stands.find(",linearly stable,multipliers: 0.99"), std::string::npos) << stands;
+}
+
 TEST(SweepRun, AModelChangedSinceThePlanIsRefused) {
   Sweep s("double-pendulum", {"theta1=0.1:0.2:2"}, 0.1);
   std::ofstream(s.model, std::ios::app) << "# edited\n";

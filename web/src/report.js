@@ -158,6 +158,23 @@ function renderMath() {
   if (point.none !== undefined) {
     s.append(element('p', { class: 'note' }, `No operating point: ${point.none}. ` +
       'unidyn report MODEL --at NAME=VALUE names one.'));
+  } else if (point.multipliers !== undefined) {
+    // a driven system's periodic motion (`unidyn modes` of a model whose equations depend on t)
+    s.append(element('p', {}, `About ${point.label}: a periodic motion of period T = ` +
+      `${point.period} s; x' = A(t) x over one period gives the monodromy matrix Φ, ` +
+      'x(t0 + T) = Φ x(t0), whose eigenvalues are the Floquet multipliers (a perturbation is ' +
+      'multiplied by μ each period).'));
+    s.append(mathBlock(point.latex));
+    const table = element('table', { class: 'parameters' });
+    table.append(element('tr', {}, element('th', {}, 'multiplier μ'), element('th', {}, '|μ|'),
+      element('th', {}, 'exponent log(μ)/T')));
+    for (const m of point.multipliers) {
+      table.append(element('tr', {}, element('td', { class: 'eigenvalues' }, m.multiplier),
+        element('td', {}, m.modulus === null ? '' : m.modulus.toPrecision(6)),
+        element('td', { class: 'eigenvalues' }, m.exponent)));
+    }
+    s.append(table);
+    s.append(element('p', {}, `${point.stability}: ${point.reason}`));
   } else {
     s.append(element('p', {}, `About ${point.label}: x' = A x, the independent coordinates and ` +
       'rates perturbed (ignorable coordinates dropped).'));
@@ -631,7 +648,8 @@ function selftest() {
     arrows: arrows.length,
     surfaces: surfaces.length,
     equilibria: data.equilibria.items ? data.equilibria.items.length : -1,
-    modes: data.operating_point.modes ? data.operating_point.modes.length : -1,
+    modes: data.operating_point.modes ? data.operating_point.modes.length
+      : data.operating_point.multipliers ? data.operating_point.multipliers.length : -1,
     ready_ms: Math.round(readyMilliseconds),
   };
   document.body.append(element('pre', { id: 'selftest' }, JSON.stringify(result)));

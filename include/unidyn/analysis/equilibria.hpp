@@ -64,7 +64,9 @@ struct EquilibriumSearchResult {
   std::size_t singular = 0, not_steady = 0;
 };
 
-// Throws std::invalid_argument (bad input): a cyclic coordinate that is not one, given a value
+// Throws std::invalid_argument (bad input): equations that change with t (analysis/
+// time_dependence.hpp: their rest states are periodic motions, analysis/floquet.hpp), a cyclic
+// coordinate that is not one, given a value
 // of its rate and its momentum, a momentum given for a coordinate not said to be cyclic, or a value
 // that is not a real number.
 EquilibriumSearchResult find_equilibria(const System& system, const CompiledSystem& compiled,

@@ -6,12 +6,12 @@
 // The equations depend on t when some entry of M, f, A, b or e has a derivative along t that is not
 // identically zero (symbolic/zero_test.hpp: a hoop turning at a constant rate Ω has Ω t in its
 // positions, and equations that do not change with t). Ψ's own t enters the motion through
-// e = ∂Ψ/∂t: a coordinate turned at a constant rate, Ψ = φ − Ωt, leaves the equations as they are. They are periodic when every t is
-// inside sin, cos or tan of ω t + c, ω a number or an expression in the parameters: with the
-// frequencies ω_k at the parameters' values commensurate (each ratio ω_k/ω_1 a fraction p/q,
-// q ≤ 1000, to 1e-12), the period is T = 2π/ω₀, ω₀ = |ω_1| gcd(n_k)/L for ω_k = |ω_1| n_k/L.
-// A period the user gives (`--period T`) is taken instead, once the compiled equations are
-// seen to repeat after it: the same at t and t + T, at random states and instants.
+// e = ∂Ψ/∂t: a coordinate turned at a constant rate, Ψ = φ − Ωt, leaves the equations as they are.
+// They are periodic when every t is inside sin, cos or tan of ω t + c, ω a number or an expression
+// in the parameters: with the frequencies ω_k at the parameters' values commensurate (each ratio
+// ω_k/ω_1 a fraction p/q, q ≤ 1000, to 1e-12), the period is T = 2π/ω₀, ω₀ = |ω_1| gcd(n_k)/L for
+// ω_k = |ω_1| n_k/L. A period the user gives (`--period T`) is taken instead, once the compiled
+// equations are seen to repeat after it: the same at t and t + T, at random states and instants.
 #pragma once
 
 #include <optional>
@@ -40,6 +40,12 @@ struct TimeDependence {
 
 // How the equations `eq` of `system` depend on t.
 TimeDependence time_dependence(const System& system, const EquationsOfMotion& eq);
+
+// Whether the compiled equations (M, f, A, b, e) change with t at the parameters' values, by
+// evaluating them at random states at three instants: no symbols needed, for the layers that have
+// only the compiled system (analysis/equilibria.hpp). A nonzero difference proves dependence; equal
+// values at random irrational instants make it improbable.
+bool changes_with_t(const CompiledSystem& compiled, const std::vector<double>& parameters);
 
 // The period of a periodic dependence at the parameters' values, and how it was found.
 struct DrivePeriod {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "unidyn/analysis/equilibria.hpp"
+#include "unidyn/analysis/floquet.hpp"
 #include "unidyn/analysis/modes.hpp"
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/report/web_assets.hpp"
@@ -40,6 +41,10 @@ struct ReportOperatingPoint {
   std::string latex;
   std::vector<std::string> coordinates;
   ModeAnalysis modes;
+  // A periodic motion of a driven system (analysis/floquet.hpp): its period and Floquet
+  // multipliers in place of the modes, and ẋ = A(t) x with the monodromy matrix in the LaTeX.
+  std::optional<FloquetAnalysis> floquet;
+  double period = 0.0;
 };
 
 // What the page says of the model beyond its equations: the Newton–Euler check in words, and its
