@@ -83,6 +83,25 @@ std::vector<GivenValue> parse_given_values(const System& system,
   return given;
 }
 
+std::vector<GivenValue> initial_values(const System& system,
+                                       const std::vector<std::pair<std::string, double>>& sets) {
+  const SimulationStart start = initial_state(system, sets);
+  std::vector<GivenValue> out;
+  const auto& q = system.coordinates();
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (start.q_given[i]) {
+      out.push_back({q[i].name, given_number(start.q[static_cast<Eigen::Index>(i)])});
+    }
+  }
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (start.qdot_given[i]) {
+      out.push_back(
+          {"der(" + q[i].name + ")", given_number(start.qdot[static_cast<Eigen::Index>(i)])});
+    }
+  }
+  return out;
+}
+
 void expect_smooth_contacts(const System& system, const std::vector<double>& parameters) {
   const GiNaC::exmap values = system.parameter_values(parameters);
   for (const Constraint& c : system.constraints) {

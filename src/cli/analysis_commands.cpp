@@ -170,12 +170,11 @@ void write_periodic(std::ostream& out, const std::string& command, const Analysi
 void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
   const auto common = [&](CLI::App* command) {
     command->add_option("model", c.model, "MODEL file or bundled model name")->required();
-    command
-        ->add_option("--at", c.at,
-                     "NAME=VALUE of the operating point: q or der(q), VALUE a number or an "
-                     "expression in the parameters; values not given start at 0 and are completed "
-                     "from the constraints")
-        ->required();
+    command->add_option(
+        "--at", c.at,
+        "NAME=VALUE of the operating point: q or der(q), VALUE a number or an "
+        "expression in the parameters; values not given start at 0 and are completed "
+        "from the constraints (without --at: the model's initial state)");
     command->add_option("--set", c.sets, "NAME=NUMBER: a parameter");
     command->add_option("--format", c.format, "text | latex | json")
         ->check(CLI::IsMember({"text", "latex", "json"}))
@@ -220,31 +219,12 @@ void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
                       "with --sweep: the CSV file (default: standard output)");
 }
 
-void write_analysis(std::ostream& out, const std::string& command, const AnalysisCommands& c,
-                    const CommandModel& model) {
-  const System& system = model.system;
-  const bool equilibria = command == "equilibria";
-  const auto sets = parameter_sets(system, c.sets);
-  const std::vector<GivenValue> given =
-      parse_given_values(system, c.at, equilibria && !c.cyclic.empty());
-  const EquationsOfMotion equations = lagrange_equations(system);
-  const CompiledSystem compiled(system, equations);
-  const TimeDependence dependence = time_dependence(system, equations);
-  const std::vector<double> parameters = initial_state(system, sets).parameters;
-  if (equilibria) {
-    const auto found = find_equilibria(system, compiled, given, parameters,
-                                       {.starts = c.starts, .cyclic = c.cyclic});
-    out << (c.format == "json" ? equilibria_json(system, found)
-                               : equilibria_text(system, found, c.starts));
-    return;
-  }
-  const std::optional<DrivePeriod> drive =
-      drive_of(system, compiled, dependence, parameters, period_given(c));
-  const OperatingPoint point = operating_point(system, compiled, given, parameters);
-  if (drive) {
-    write_periodic(out, command, c, system, compiled, point, *drive);
-    return;
-  }
+// linearize, modes about an equilibrium or a steady motion: A (in closed form where it can be),
+// with modes the eigenvalues and the verdict.
+void write_linearization(std::ostream& out, const std::string& command, const AnalysisCommands& c,
+                         const System& system, const EquationsOfMotion& equations,
+                         const CompiledSystem& compiled, const OperatingPoint& point,
+                         const std::vector<GivenValue>& given) {
   const Linearization linearization = linearize(system, compiled, point);
   const bool modes = command == "modes";
   const ModeAnalysis analysis = modes ? analyse_modes(linearization) : ModeAnalysis{};
@@ -259,6 +239,45 @@ void write_analysis(std::ostream& out, const std::string& command, const Analysi
   out << operating_point_text(system, point, linearization) << linearization_text(linearization)
       << exact_text(system, linearization, exact);
   if (modes) out << modes_text(linearization, analysis);
+}
+
+void write_analysis(std::ostream& out, const std::string& command, const AnalysisCommands& c,
+                    const CommandModel& model) {
+  const System& system = model.system;
+  const bool equilibria = command == "equilibria";
+  const auto sets = parameter_sets(system, c.sets);
+  // without --at, linearize and modes are about the model's initial state
+  const bool initial = c.at.empty() && !equilibria;
+  const std::vector<GivenValue> given =
+      initial ? initial_values(system, sets)
+              : parse_given_values(system, c.at, equilibria && !c.cyclic.empty());
+  const EquationsOfMotion equations = lagrange_equations(system);
+  const CompiledSystem compiled(system, equations);
+  const TimeDependence dependence = time_dependence(system, equations);
+  const std::vector<double> parameters = initial_state(system, sets).parameters;
+  if (equilibria) {
+    const auto found = find_equilibria(system, compiled, given, parameters,
+                                       {.starts = c.starts, .cyclic = c.cyclic});
+    out << (c.format == "json" ? equilibria_json(system, found)
+                               : equilibria_text(system, found, c.starts));
+    return;
+  }
+  const std::optional<DrivePeriod> drive =
+      drive_of(system, compiled, dependence, parameters, period_given(c));
+  OperatingPoint point = operating_point(system, compiled, given, parameters);
+  if (initial) point.source = "the model's initial state (no --at given)";
+  try {
+    if (drive) {
+      write_periodic(out, command, c, system, compiled, point, *drive);
+    } else {
+      write_linearization(out, command, c, system, equations, compiled, point, given);
+    }
+  } catch (const NotAnOperatingPoint& e) {
+    if (!initial) throw;
+    throw NotAnOperatingPoint(std::string("no --at given, and the model's initial state is not an "
+                                          "operating point: ") +
+                              e.what());
+  }
 }
 
 int run_analysis_commands(const AnalysisCommands& c) {

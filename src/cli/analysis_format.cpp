@@ -118,7 +118,9 @@ std::string point_json(const System& system, const OperatingPoint& point) {
     }
     return s + "}";
   };
-  return "  \"operating_point\": {\"coordinates\": " + values(point.q, "", "") +
+  const std::string source =
+      point.source.empty() ? "" : "  \"source\": " + quoted(point.source) + ",\n";
+  return source + "  \"operating_point\": {\"coordinates\": " + values(point.q, "", "") +
          ",\n    \"rates\": " + values(point.qdot, "der(", ")") +
          ",\n    \"accelerations\": " + values(point.qddot, "der(der(", "))") +
          "},\n  \"computed\": " + json_names(point.computed) + ",\n";

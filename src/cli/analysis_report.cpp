@@ -79,6 +79,7 @@ std::string analysis_latex(const System& system, const OperatingPoint& point,
 std::string operating_point_text(const System& system, const OperatingPoint& point,
                                  const Linearization& linearization) {
   std::string out = "operating point of " + system.name + "\n";
+  if (!point.source.empty()) out += "  from " + point.source + "\n";
   const std::vector<std::string> given = given_values(system, point);
   out +=
       "  given: " + (given.empty() ? std::string("nothing (all values 0)") : joined(given)) + "\n";

@@ -54,6 +54,26 @@ TEST(AnalysisCommands, BadInputRefused) {
   }
 }
 
+// Without --at the operating point is the model's initial state, said so; refused with the reason
+// when it is not one. The hoop's bead starts at phi0: at the top (0) it is an equilibrium, where
+// λ² = Ω² + g/R0.
+TEST(AnalysisCommands, WithoutAtTheInitialState) {
+  const Outcome top = run("modes rotating-hoop --set phi0=0");
+  ASSERT_EQ(top.status, 0) << top.err;
+  EXPECT_TRUE(contains(top.out, "from the model's initial state (no --at given)")) << top.out;
+  EXPECT_TRUE(contains(top.out, "given: phi = 0")) << top.out;
+  EXPECT_TRUE(contains(top.out, "stability: unstable")) << top.out;
+  const Outcome json = run("linearize rotating-hoop --set phi0=0 --format json");
+  EXPECT_TRUE(contains(json.out, "\"source\": \"the model's initial state (no --at given)\""))
+      << json.out;
+  const Outcome moving = run("modes rotating-hoop");
+  EXPECT_EQ(moving.status, 2);
+  EXPECT_TRUE(contains(moving.err,
+                       "no --at given, and the model's initial state is not an "
+                       "operating point: the acceleration of phi"))
+      << moving.err;
+}
+
 // A pendulum on a vibrating pivot (issue 34's case, Kapitza): at 0.8 of the boundary the inverted
 // position falls (Floquet: a multiplier outside the unit circle), above it it stands, and the sweep
 // finds the boundary at sqrt(4g/(l |a0(2a/l)|)) = 198.199059109 (a0 of the Mathieu equation:

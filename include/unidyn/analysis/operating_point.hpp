@@ -36,6 +36,8 @@ struct OperatingPoint {
   std::vector<std::string> computed;
   // Unilateral constraints apart at the point (Ψ > 0): they exert nothing and are left out.
   std::vector<bool> active;
+  // Where its values come from when not from --at: "the model's initial state" (printed).
+  std::string source;
 };
 
 // A value of the state a name stands for: coordinate q ("q") or its rate ("der(q)").
@@ -65,6 +67,12 @@ std::vector<GivenValue> parse_given_values(const System& system,
 // Throws std::invalid_argument when a constraint has friction (a coefficient that is not 0 at the
 // parameters' values): stick and slip are not smooth, and the analysis is of smooth equations.
 void expect_smooth_contacts(const System& system, const std::vector<double>& parameters);
+
+// The model's initial state as given values: each coordinate and rate its `initial:` gives (at the
+// parameters `sets` give), the others left to the completion from the constraints, as a
+// simulation's start completes them. The operating point of `linearize` and `modes` without --at.
+std::vector<GivenValue> initial_values(const System& system,
+                                       const std::vector<std::pair<std::string, double>>& sets);
 
 // The operating point with the given values at the parameters' values. Throws
 // std::invalid_argument (bad input) when a value is not a real number, when the constraints cannot
