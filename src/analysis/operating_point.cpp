@@ -15,9 +15,11 @@
 namespace unidyn {
 namespace {
 
-// A unilateral constraint is apart where Ψ exceeds round-off of the coordinates' size.
-bool apart(double psi, const Eigen::VectorXd& q) {
-  return psi > kInitialStateTolerance * (1.0 + q.cwiseAbs().maxCoeff());
+// A unilateral constraint is apart where Ψ > 0 beyond the one tolerance (integrate/
+// initial_state.hpp: as a distance, relative to the state's size).
+bool apart(double psi, const Eigen::Ref<const Eigen::RowVectorXd>& gradient,
+           const Eigen::VectorXd& q) {
+  return psi > 0.0 && relative_residual(psi, gradient, q) > kConstraintTolerance;
 }
 
 }  // namespace
@@ -157,7 +159,8 @@ OperatingPoint operating_point(const System& system, const CompiledSystem& compi
   point.active.assign(m, true);
   for (std::size_t k = 0; k < m; ++k) {
     if (system.constraints[k].unilateral &&
-        apart(data.constraint_position[static_cast<Eigen::Index>(k)], point.q)) {
+        apart(data.constraint_position[static_cast<Eigen::Index>(k)],
+              data.constraint_matrix.row(static_cast<Eigen::Index>(k)), point.q)) {
       point.active[k] = false;
     }
   }

@@ -111,7 +111,13 @@ void write_derivation(std::ostream& out, const ModelCommands& c, const CommandMo
   if (c.standalone) {
     out << "\\documentclass{article}\n\\usepackage{amsmath}\n\\begin{document}\n" << std::flush;
   }
-  if (c.method == "lagrange" || c.method == "kane") {
+  if (c.method == "kane" && c.form != "matrix") {
+    // F_r + F*_r = 0 with the partial velocities (M and f with --form matrix)
+    const EquationsOfMotion eq = kane_equations(system);
+    end_phase("derive (kane)");
+    write_kane(out, system, eq, lagrange_second_form(system, newton_equations(system), eq), format);
+    end_phase("print");
+  } else if (c.method == "lagrange" || c.method == "kane") {
     // M q̈ = f + Aᵀλ by Lagrange's equations, or through partial velocities (the same M and f):
     // as the book prints them, or as the matrices
     const EquationsOfMotion eq =
@@ -139,10 +145,6 @@ void write_derivation(std::ostream& out, const ModelCommands& c, const CommandMo
 }
 
 namespace {
-
-// How far the initial state may be off its constraints for `check` (|Ψ| and |A q' + e|, in the
-// model's own units).
-constexpr double kInitialResidualTolerance = 1e-9;
 
 int run_check(const ModelCommands& c, const CommandModel& model) {
   const System system = command_system(c, model.system);
@@ -187,24 +189,33 @@ int run_check(const ModelCommands& c, const CommandModel& model) {
         data.constraint_matrix * start.qdot + data.constraint_velocity_term;
     // the constraints that hold: all but the unilateral ones that start apart (Ψ > 0)
     std::vector<Eigen::Index> holding;
-    double worst = 0;  // the largest residual, and what it is
+    // the largest residual as the one tolerance measures it (integrate/initial_state.hpp), and
+    // what it is
+    double worst = 0;
     std::string worst_text;
     double max_psi = 0, max_velocity = 0;
-    const auto note = [&](double value, const char* what, std::size_t k) {
-      if (std::abs(value) <= worst) return;
-      worst = std::abs(value);
-      worst_text = fmt::format("{} of {} is {:.3g}", what, system.constraints[k].name, value);
+    const auto note = [&](double value, const char* what, std::size_t k,
+                          const Eigen::VectorXd& values) {
+      const double relative = relative_residual(
+          value, data.constraint_matrix.row(static_cast<Eigen::Index>(k)), values);
+      if (relative <= worst) return;
+      worst = relative;
+      worst_text = fmt::format("{} of {} is {:.3g} ({:.3g} of the state's size as a distance)",
+                               what, system.constraints[k].name, value, relative);
     };
     for (std::size_t k = 0; k < compiled.constraint_count(); ++k) {
       const auto K = static_cast<Eigen::Index>(k);
       const bool position = compiled.is_position_constraint()[k];
       const double psi = position ? data.constraint_position[K] : 0.0;
-      if (system.constraints[k].unilateral && psi > kInitialResidualTolerance) continue;
+      if (system.constraints[k].unilateral && psi > 0.0 &&
+          relative_residual(psi, data.constraint_matrix.row(K), start.q) > kConstraintTolerance) {
+        continue;  // apart
+      }
       holding.push_back(K);
       max_psi = std::max(max_psi, std::abs(psi));
       max_velocity = std::max(max_velocity, std::abs(velocity[K]));
-      note(psi, "Psi", k);
-      note(velocity[K], "A q' + e", k);
+      note(psi, "Psi", k, start.q);
+      note(velocity[K], "A q' + e", k, start.qdot);
     }
     const Eigen::FullPivLU<Eigen::MatrixXd> lu(data.constraint_matrix(holding, Eigen::all));
     fmt::print(
@@ -217,9 +228,9 @@ int run_check(const ModelCommands& c, const CommandModel& model) {
       fmt::print("  the constraints are not independent at the initial state\n");
       state_ok = false;
     }
-    if (worst > kInitialResidualTolerance) {
-      fmt::print("  the initial state violates the constraints (tolerance {:g}): {}\n",
-                 kInitialResidualTolerance, worst_text);
+    if (worst > kConstraintTolerance) {
+      fmt::print("  the initial state violates the constraints (tolerance {:g} of its size): {}\n",
+                 kConstraintTolerance, worst_text);
       state_ok = false;
     }
   }

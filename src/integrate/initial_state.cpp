@@ -4,6 +4,7 @@
 
 #include <Eigen/QR>
 #include <cmath>
+#include <numbers>
 
 #include "unidyn/integrate/simulation.hpp"
 #include "unidyn/numeric/number_text.hpp"
@@ -36,6 +37,20 @@ std::vector<Eigen::Index> free_indices(const std::vector<bool>& given) {
   return free;
 }
 
+// The worst row of `residual` over `rows` as relative_residual measures it (gradients the rows of
+// A, sizes from `values`): its index and that fraction.
+std::pair<Eigen::Index, double> worst_relative(const Eigen::VectorXd& residual,
+                                               const Eigen::MatrixXd& A,
+                                               const std::vector<Eigen::Index>& rows,
+                                               const Eigen::VectorXd& values) {
+  std::pair<Eigen::Index, double> w{-1, 0.0};
+  for (const Eigen::Index k : rows) {
+    const double r = relative_residual(residual[k], A.row(k), values);
+    if (r > w.second) w = {k, r};
+  }
+  return w;
+}
+
 // The worst row of `residual` over `rows`: its index and |value|.
 std::pair<Eigen::Index, double> worst(const Eigen::VectorXd& residual,
                                       const std::vector<Eigen::Index>& rows) {
@@ -46,7 +61,132 @@ std::pair<Eigen::Index, double> worst(const Eigen::VectorXd& residual,
   return w;
 }
 
+// The position constraints' residuals beyond the tolerance over `rows`: "'rope1' (Psi = 0.05),
+// 'rope2' (Psi = -0.05)".
+std::string residuals_text(const System& system, const Eigen::VectorXd& psi,
+                           const Eigen::MatrixXd& A, const std::vector<Eigen::Index>& rows,
+                           const Eigen::VectorXd& q) {
+  std::string out;
+  for (const Eigen::Index k : rows) {
+    if (relative_residual(psi[k], A.row(k), q) <= kConstraintTolerance) continue;
+    out += (out.empty() ? "'" : ", '") + system.constraints[static_cast<std::size_t>(k)].name +
+           "' (Psi = " + detail::to_short_text(psi[k]) + ")";
+  }
+  return out;
+}
+
+// Newton's method on Ψ_P(q) = 0 over the free coordinates, least-norm (Gauss–Newton) steps, into
+// start.q; data holds the constraints there. Throws InitialStateError: the values given violate a
+// constraint with nothing free to change it; they contradict the constraints (the steps reach the
+// best fit, Jᵀ Ψ = 0, with Ψ ≠ 0: every constraint left unsatisfied named); the free coordinates
+// cannot change it (gradient 0); Newton does not converge.
+void complete_positions(const System& system, const CompiledSystem& compiled,
+                        SimulationStart& start, const std::vector<Eigen::Index>& position_rows,
+                        const std::vector<Eigen::Index>& free_q, CompiledSystemData& data) {
+  const std::span<const double> p(start.parameters);
+  const auto position_failure = [&](const std::string& why) {
+    const auto [k, r] = worst(data.constraint_position, position_rows);
+    throw InitialStateError(
+        "the initial state cannot satisfy constraint '" +
+        system.constraints[static_cast<std::size_t>(k)].name +
+        "' (Psi = " + detail::to_short_text(data.constraint_position[k]) + ", coordinates " +
+        involved(system, data.constraint_matrix, k, start.q_given, "", "") + "): " + why);
+  };
+  for (int iteration = 0;; ++iteration) {
+    // the residual as the one tolerance measures it (a distance, relative to the state's size):
+    // at round-off Newton is done; within the tolerance the values typed are taken as they are
+    const double relative =
+        worst_relative(data.constraint_position, data.constraint_matrix, position_rows, start.q)
+            .second;
+    if (relative <= 1e-15) break;
+    const bool holds = relative <= kConstraintTolerance;
+    if (free_q.empty()) {
+      if (holds) break;
+      position_failure(
+          "the values given violate it; leave a coordinate it involves out of "
+          "initial: (and --set) to have it computed, or use --project");
+    }
+    const Eigen::MatrixXd J = data.constraint_matrix(position_rows, free_q);
+    const Eigen::VectorXd psi = data.constraint_position(position_rows);
+    // the best fit reached, and it leaves residuals: the values given contradict the constraints
+    if (!holds && iteration > 0 && (J.transpose() * psi).norm() <= 1e-10 * J.norm() * psi.norm()) {
+      throw InitialStateError(
+          "the values given contradict the constraints: no values of the coordinates not given "
+          "satisfy " +
+          residuals_text(system, data.constraint_position, data.constraint_matrix, position_rows,
+                         start.q) +
+          " together (the residuals of the best fit); change or leave out one of the values "
+          "given that they involve");
+    }
+    if (iteration == 50) {
+      if (holds) break;
+      position_failure("Newton's method over the coordinates not given does not converge");
+    }
+    const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition(J);
+    const Eigen::VectorXd step = decomposition.solve(psi);
+    if (!step.allFinite() || step.norm() == 0.0) {
+      if (holds) break;
+      position_failure(
+          "the coordinates not given cannot change it here (its gradient in them "
+          "is 0); give them values");
+    }
+    for (std::size_t j = 0; j < free_q.size(); ++j) {
+      start.q[free_q[j]] -= step[static_cast<Eigen::Index>(j)];
+    }
+    compiled.constraints(start.t0, start.q, start.qdot, p, data);
+  }
+}
+
+// Whether the compiled equations and constraints are the same at q and at q with coordinate j
+// moved by `shift` (to 1e-9 of their size): an angle moved by whole turns.
+bool same_after_shift(const CompiledSystem& compiled, const SimulationStart& start, Eigen::Index j,
+                      double shift) {
+  std::vector<double> inputs{start.t0};
+  inputs.insert(inputs.end(), start.q.begin(), start.q.end());
+  inputs.insert(inputs.end(), start.qdot.begin(), start.qdot.end());
+  inputs.insert(inputs.end(), start.parameters.begin(), start.parameters.end());
+  for (const Tape* tape : {&compiled.dynamics(), &compiled.constraint_tape()}) {
+    const std::vector<double> here = tape->evaluate(inputs);
+    std::vector<double> moved_inputs = inputs;
+    moved_inputs[static_cast<std::size_t>(1 + j)] += shift;
+    const std::vector<double> there = tape->evaluate(moved_inputs);
+    double scale = 1.0;
+    for (const double v : here) scale = std::max(scale, std::abs(v));
+    for (std::size_t k = 0; k < here.size(); ++k) {
+      if (!(std::abs(here[k] - there[k]) <= 1e-9 * scale)) return false;
+    }
+  }
+  return true;
+}
+
+// The free coordinates Newton took more than half a turn from where they started (the model's
+// value, or 0) moved back by whole turns to the value nearest it, where the equations and the
+// constraints repeat after 2π in them (angles): a closed loop's angles computed from far away come
+// out in the configuration found, not 31 turns on. data holds the constraints at start.q. Returns
+// whether any moved.
+bool nearest_turns(const CompiledSystem& compiled, SimulationStart& start,
+                   const std::vector<Eigen::Index>& free_q, const Eigen::VectorXd& from,
+                   CompiledSystemData& data) {
+  constexpr double turn = 2.0 * std::numbers::pi;
+  bool moved = false;
+  for (const Eigen::Index j : free_q) {
+    const double turns = std::round((start.q[j] - from[j]) / turn);
+    if (turns == 0.0 || !same_after_shift(compiled, start, j, -turns * turn)) continue;
+    start.q[j] -= turns * turn;
+    moved = true;
+  }
+  if (moved) compiled.constraints(start.t0, start.q, start.qdot, start.parameters, data);
+  return moved;
+}
+
 }  // namespace
+
+double relative_residual(double residual, const Eigen::Ref<const Eigen::RowVectorXd>& gradient,
+                         const Eigen::VectorXd& values) {
+  const double size = values.size() == 0 ? 0.0 : values.cwiseAbs().maxCoeff();
+  const double length = gradient.norm();
+  return std::abs(residual) / (length > 0.0 ? length : 1.0) / (size > 0.0 ? size : 1.0);
+}
 
 void apply_initial_angular_velocities(const System& system, SimulationStart& start) {
   if (system.initial_omegas.empty()) return;
@@ -118,43 +258,13 @@ std::vector<std::string> complete_initial_state(const System& system,
     if (compiled.is_position_constraint()[k]) position_rows.push_back(K);
   }
 
-  // Positions: Newton's method on Ψ_P(q) = 0 over the free coordinates, least-norm steps.
+  // Positions: Newton's method on Ψ_P(q) = 0 over the free coordinates, least-norm steps; angles
+  // computed then taken the whole turns back to the value they started from.
   const std::vector<Eigen::Index> free_q = free_indices(start.q_given);
-  const auto position_failure = [&](const std::string& why) {
-    const auto [k, r] = worst(data.constraint_position, position_rows);
-    throw InitialStateError(
-        "the initial state cannot satisfy constraint '" +
-        system.constraints[static_cast<std::size_t>(k)].name +
-        "' (Psi = " + detail::to_short_text(data.constraint_position[k]) + ", coordinates " +
-        involved(system, data.constraint_matrix, k, start.q_given, "", "") + "): " + why);
-  };
-  for (int iteration = 0;; ++iteration) {
-    const double residual = worst(data.constraint_position, position_rows).second;
-    if (residual <= 1e-14 * (1.0 + start.q.cwiseAbs().maxCoeff())) break;
-    if (free_q.empty()) {
-      if (residual <= kInitialStateTolerance) break;  // round-off of typed values
-      position_failure(
-          "the values given violate it; leave a coordinate it involves out of "
-          "initial: (and --set) to have it computed, or use --project");
-    }
-    if (iteration == 50) {
-      if (residual <= kInitialStateTolerance) break;
-      position_failure("Newton's method over the coordinates not given does not converge");
-    }
-    const Eigen::MatrixXd J = data.constraint_matrix(position_rows, free_q);
-    const Eigen::VectorXd psi = data.constraint_position(position_rows);
-    const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition(J);
-    const Eigen::VectorXd step = decomposition.solve(psi);
-    if (!step.allFinite() || step.norm() == 0.0) {
-      if (residual <= kInitialStateTolerance) break;
-      position_failure(
-          "the coordinates not given cannot change it here (its gradient in them "
-          "is 0); give them values");
-    }
-    for (std::size_t j = 0; j < free_q.size(); ++j) {
-      start.q[free_q[j]] -= step[static_cast<Eigen::Index>(j)];
-    }
-    compiled.constraints(start.t0, start.q, start.qdot, p, data);
+  complete_positions(system, compiled, start, position_rows, free_q, data);
+  if (nearest_turns(compiled, start, free_q, q_given_values, data)) {
+    // converged again where the turns put it (far out, the angle kept only 1e-10 of a turn)
+    complete_positions(system, compiled, start, position_rows, free_q, data);
   }
 
   // Rates: A_R q̇ + e_R = 0 over the free rates, least norm.
@@ -171,7 +281,8 @@ std::vector<std::string> complete_initial_state(const System& system,
     }
     velocity = data.constraint_matrix * start.qdot + data.constraint_velocity_term;
   }
-  if (const auto [k, r] = worst(velocity, rows); r > kInitialStateTolerance * scale) {
+  if (const auto [k, r] = worst_relative(velocity, data.constraint_matrix, rows, start.qdot);
+      r > kConstraintTolerance) {
     throw InitialStateError(
         "the initial rates cannot satisfy constraint '" +
         system.constraints[static_cast<std::size_t>(k)].name +
@@ -204,7 +315,9 @@ std::vector<std::string> complete_initial_state(const System& system,
   for (std::size_t k = 0; k < m; ++k) {
     const auto K = static_cast<Eigen::Index>(k);
     if (!system.constraints[k].unilateral) continue;
-    if (data.constraint_position[K] < -kInitialStateTolerance) {
+    if (data.constraint_position[K] < 0.0 &&
+        relative_residual(data.constraint_position[K], data.constraint_matrix.row(K), start.q) >
+            kConstraintTolerance) {
       throw InitialStateError("the initial state is inside the unilateral contact '" +
                               system.constraints[k].name +
                               "' (Psi = " + detail::to_short_text(data.constraint_position[K]) +

@@ -113,6 +113,55 @@ std::string render(const Expr& e, EquationFormat format) {
   return format == EquationFormat::latex ? to_latex(e) : to_text(e);
 }
 
+// Each moving particle's and body's partial velocity (and angular velocity) for coordinate A:
+// label ("P1.velocity"), LaTeX, vector; those that are zero left out.
+struct Partial {
+  std::string label, latex;
+  VectorExpr v;
+};
+std::vector<Partial> partial_velocities(const System& system, const SecondForm& form,
+                                        std::size_t A) {
+  std::vector<Partial> list;
+  const auto add = [&](const std::string& name, const char* member, const std::string& symbol,
+                       const VectorExpr& v) {
+    if (v[0].is_zero() && v[1].is_zero() && v[2].is_zero()) return;
+    list.push_back({name + member, symbol + "_{\\mathrm{" + name + "}}", v});
+  };
+  for (std::size_t p = 0; p < system.particles.size(); ++p) {
+    add(system.particles[p].name, ".velocity", "\\mathbf{v}", form.particle_velocity[A][p]);
+  }
+  for (std::size_t b = 0; b < system.bodies.size(); ++b) {
+    add(system.bodies[b].name, ".velocity", "\\bar{\\mathbf{v}}", form.center_velocity[A][b]);
+    add(system.bodies[b].name, ".omega", "\\boldsymbol{\\omega}", form.angular_velocity[A][b]);
+  }
+  return list;
+}
+
+// The partial velocities of coordinate A as lines ("  [theta1]  d(P1.velocity)/d(theta1') = [..]")
+// or LaTeX rows, and as a JSON object's members.
+void write_partials(std::ostream& out, const System& system, const std::vector<Partial>& list,
+                    std::size_t A, bool latex) {
+  const auto& q = system.coordinates();
+  for (const Partial& partial : list) {
+    if (latex) {
+      out << "  \\frac{\\partial " << partial.latex << "}{\\partial " << to_latex(q[A].rate)
+          << "} &= " << render_vector(partial.v, true) << " \\\\\n";
+    } else {
+      out << "  [" << q[A].name << "]  d(" << partial.label << ")/d(" << q[A].name
+          << "') = " << render_vector(partial.v, false) << "\n";
+    }
+  }
+}
+std::string partials_json(const std::vector<Partial>& list) {
+  std::string out = "{";
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    out += std::string(i ? ", " : "") + quoted(list[i].label) + ": [";
+    for (int k = 0; k < 3; ++k) out += std::string(k ? ", " : "") + quoted(to_text(list[i].v[k]));
+    out += "]";
+  }
+  return out + "}";
+}
+
 }  // namespace
 
 void write_lagrange(std::ostream& out, const System& system, const EquationsOfMotion& eq,
@@ -160,27 +209,7 @@ void write_lagrange(std::ostream& out, const System& system, const EquationsOfMo
 void write_second_form(std::ostream& out, const System& system, const EquationsOfMotion& eq,
                        const SecondForm& form, EquationFormat format) {
   const auto& q = system.coordinates();
-  // each moving particle's and body's partial velocities for coordinate A: label, LaTeX, vector
-  struct Partial {
-    std::string label, latex;
-    VectorExpr v;
-  };
-  const auto partials = [&](std::size_t A) {
-    std::vector<Partial> list;
-    const auto add = [&](const std::string& name, const char* member, const std::string& symbol,
-                         const VectorExpr& v) {
-      if (v[0].is_zero() && v[1].is_zero() && v[2].is_zero()) return;
-      list.push_back({name + member, symbol + "_{\\mathrm{" + name + "}}", v});
-    };
-    for (std::size_t p = 0; p < system.particles.size(); ++p) {
-      add(system.particles[p].name, ".velocity", "\\mathbf{v}", form.particle_velocity[A][p]);
-    }
-    for (std::size_t b = 0; b < system.bodies.size(); ++b) {
-      add(system.bodies[b].name, ".velocity", "\\bar{\\mathbf{v}}", form.center_velocity[A][b]);
-      add(system.bodies[b].name, ".omega", "\\boldsymbol{\\omega}", form.angular_velocity[A][b]);
-    }
-    return list;
-  };
+  const auto partials = [&](std::size_t A) { return partial_velocities(system, form, A); };
   const auto lhs = [&](std::size_t A) {
     return collect_in(form.inertia_terms[A], accelerations(system));
   };
@@ -192,14 +221,8 @@ void write_second_form(std::ostream& out, const System& system, const EquationsO
     out << "  \"equations\": [";
     for (std::size_t A = 0; A < q.size(); ++A) {
       out << (A ? ",\n    " : "\n    ") << "{\"coordinate\": " << quoted(q[A].name)
-          << ", \"partial_velocities\": {";
-      const auto list = partials(A);
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        out << (i ? ", " : "") << quoted(list[i].label) << ": [";
-        for (int k = 0; k < 3; ++k) out << (k ? ", " : "") << quoted(to_text(list[i].v[k]));
-        out << "]";
-      }
-      out << "}, \"inertia_terms\": " << quoted(to_text(lhs(A)))
+          << ", \"partial_velocities\": " << partials_json(partials(A))
+          << ", \"inertia_terms\": " << quoted(to_text(lhs(A)))
           << ", \"generalized_force\": " << quoted(to_text(rhs(A))) << "}";
     }
     out << "\n  ]\n}\n";
@@ -212,19 +235,60 @@ void write_second_form(std::ostream& out, const System& system, const EquationsO
       << ", Phi_A = sum F . dv/du'^A + M . domega/du'^A\n";
   if (latex) out << "\\[\n\\begin{aligned}\n";
   for (std::size_t A = 0; A < q.size(); ++A) {
-    for (const Partial& partial : partials(A)) {
-      if (latex) {
-        out << "  \\frac{\\partial " << partial.latex << "}{\\partial " << to_latex(q[A].rate)
-            << "} &= " << render_vector(partial.v, true) << " \\\\\n";
-      } else {
-        out << "  [" << q[A].name << "]  d(" << partial.label << ")/d(" << q[A].name
-            << "') = " << render_vector(partial.v, false) << "\n";
-      }
-    }
+    write_partials(out, system, partials(A), A, latex);
     if (latex) {
       out << "  " << to_latex(lhs(A)) << " &= " << to_latex(rhs(A)) << " \\\\\n";
     } else {
       out << "  [" << q[A].name << "]  " << to_text(lhs(A)) << " = " << to_text(rhs(A)) << "\n";
+    }
+  }
+  if (latex) out << "\\end{aligned}\n\\]\n";
+}
+
+void write_kane(std::ostream& out, const System& system, const EquationsOfMotion& eq,
+                const SecondForm& form, EquationFormat format) {
+  const auto& q = system.coordinates();
+  // F_r: the active forces, the constraints' with them; F*_r = −(M q̈ + c)_r from Kane's sums
+  const auto active = [&](std::size_t r) {
+    return simplify(eq.applied_forcing[r] + constraint_terms(system, eq, r));
+  };
+  const auto inertia = [&](std::size_t r) {
+    Expr sum = eq.applied_forcing[r] - eq.forcing[r];
+    for (std::size_t j = 0; j < q.size(); ++j) sum += eq.mass_matrix(r, j) * q[j].acceleration;
+    return collect_in(-sum, accelerations(system));
+  };
+  if (format == EquationFormat::json) {
+    out << "{\n  \"name\": " << quoted(system.name) << ",\n  \"method\": \"kane\",\n";
+    out << "  \"equations\": [";
+    for (std::size_t r = 0; r < q.size(); ++r) {
+      out << (r ? ",\n    " : "\n    ") << "{\"coordinate\": " << quoted(q[r].name)
+          << ", \"partial_velocities\": " << partials_json(partial_velocities(system, form, r))
+          << ", \"generalized_active_force\": " << quoted(to_text(active(r)))
+          << ", \"generalized_inertia_force\": " << quoted(to_text(inertia(r))) << "}";
+    }
+    out << "\n  ]\n}\n";
+    return;
+  }
+  const bool latex = format == EquationFormat::latex;
+  out << (latex ? "% " : "") << system.name
+      << ": Kane's equations (10.16): F_r + F*_r = 0 for each coordinate u^r, the generalised "
+         "active force F_r = sum F . dv/du'^r + M . domega/du'^r (gravity and potentials among "
+         "them: - dU/du^r)"
+      << (system.constraints.empty() ? "" : " + sum_k lambda_k a_k^r")
+      << ", the generalised inertia force F*_r = - sum m a . dv/du'^r - (J omega' + omega x J "
+         "omega) . domega/du'^r\n";
+  if (latex) out << "\\[\n\\begin{aligned}\n";
+  for (std::size_t r = 0; r < q.size(); ++r) {
+    write_partials(out, system, partial_velocities(system, form, r), r, latex);
+    if (latex) {
+      out << "  F_{" << to_latex(q[r].value) << "} &= " << to_latex(active(r)) << " \\\\\n";
+      out << "  F^*_{" << to_latex(q[r].value) << "} &= " << to_latex(inertia(r)) << " \\\\\n";
+      out << "  F_{" << to_latex(q[r].value) << "} + F^*_{" << to_latex(q[r].value)
+          << "} &= 0 \\\\\n";
+    } else {
+      out << "  [" << q[r].name << "]  F = " << to_text(active(r)) << "\n";
+      out << "  [" << q[r].name << "]  F* = " << to_text(inertia(r)) << "\n";
+      out << "  [" << q[r].name << "]  F + F* = 0\n";
     }
   }
   if (latex) out << "\\end{aligned}\n\\]\n";

@@ -7,10 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/io/model_file.hpp"
+#include "unidyn/numeric/number_text.hpp"
 #include "unidyn/rotation/euler_angles.hpp"
 
 namespace unidyn {
@@ -91,6 +93,69 @@ TEST(InitialState, NoFreeValueCanSatisfyIt) {
   EXPECT_TRUE(contains(flat, "give them values")) << flat;
   // y alone: x = ±0.6, but from x = 0 the gradient 2x is 0 as well: x must be given
   EXPECT_TRUE(contains(error_of(circle + "{y: -0.8}"), "give them values"));
+}
+
+// Two ropes over pulleys: y1 + y2 = −L1 and y2 + y3 = −L2. Given y1 and y3 against them (y2
+// cannot be both −L1 − y1 = −2 and −L2 − y3 = −1.5), the values given contradict the constraints:
+// said so, with both ropes and their residuals at the best fit (y2 = −1.75: ±0.25), not as a
+// Newton iteration that does not converge.
+TEST(InitialState, GivenValuesThatContradictTheConstraintsAreNamedSo) {
+  const std::string ropes =
+      "unidyn: 1\nparameters: {L1: 3, L2: 2}\ncoordinates: [y1, y2, y3]\nparticles:\n"
+      "  P1: {mass: 1, position: [0, y1, 0]}\n  P2: {mass: 1, position: [1, y2, 0]}\n"
+      "  P3: {mass: 1, position: [2, y3, 0]}\nconstraints:\n"
+      "  - {name: rope1, position: y1 + y2 + L1}\n  - {name: rope2, position: y2 + y3 + L2}\n"
+      "initial: {y1: -1, y3: -0.5}\n";
+  const std::string message = error_of(ropes);
+  EXPECT_TRUE(contains(message, "the values given contradict the constraints")) << message;
+  EXPECT_TRUE(contains(message, "'rope1' (Psi = 0.25), 'rope2' (Psi = -0.25)")) << message;
+  // consistent values are completed as before
+  EXPECT_DOUBLE_EQ(complete(ropes, {{"y3", 0.0}}).start.q[1], -2.0);
+}
+
+// An angle computed from a start where the constraint's gradient is tiny: Newton's first step is
+// 5e5 rad, and it converges some 80 000 turns away. The configuration is right; the angle is taken
+// back by whole turns to the solution nearest where it started (cos θ = 1/2: θ = ±π/3), since the
+// equations repeat after 2π in it. A length is never moved so.
+TEST(InitialState, AnglesComputedComeOutNearestWhereTheyStarted) {
+  const std::string text =
+      "unidyn: 1\ncoordinates: [theta, z]\nparticles:\n"
+      "  P: {mass: 1, position: [cos(theta), sin(theta), z]}\nconstraints:\n"
+      "  - {name: pin, position: cos(theta) - 1/2}\n";
+  const System system = parse_model(text, "initial.yaml");
+  const CompiledSystem compiled(system, lagrange_equations(system));
+  SimulationStart start = initial_state(system, {});
+  start.q[0] = 1e-6;  // not given: where Newton starts
+  const std::vector<std::string> computed = complete_initial_state(system, compiled, start);
+  EXPECT_NEAR(std::abs(start.q[0]), std::acos(0.5), 1e-12) << start.q[0];
+  ASSERT_EQ(computed.size(), 1u);
+  EXPECT_TRUE(contains(computed[0], "theta = ")) << computed[0];
+  // from 40 rad, the nearest solution to 40
+  start.q[0] = 40.0;
+  complete_initial_state(system, compiled, start);
+  EXPECT_LT(std::abs(start.q[0] - 40.0), std::numbers::pi) << start.q[0];
+  EXPECT_NEAR(std::cos(start.q[0]), 0.5, 1e-12);
+}
+
+// One tolerance, relative to the model's size and measured as a distance (|Ψ| over |∂Ψ/∂q|): a
+// pendulum of 1 mm given 1e-12 m off its circle (1e-9 of its size) is refused, one of 1 km given
+// 1e-8 m off it (1e-11 of its size; Ψ = x² + y² − L² is 2e-5 m² there) is accepted — in metres
+// both were judged against 1e-10 absolute before, the wrong way round.
+TEST(InitialState, OneToleranceRelativeToTheModelsSize) {
+  const auto pendulum = [](double L, double off) {
+    return "unidyn: 1\nparameters: {L: " + std::to_string(L) +
+           "}\ncoordinates: [x, y]\nparticles:\n  P: {mass: 1, position: [x, y, 0]}\n"
+           "constraints:\n  - {name: rod, position: x^2 + y^2 - L^2}\ninitial: {x: 0, y: " +
+           detail::to_short_text(-(L + off), 17) + "}\n";
+  };
+  EXPECT_TRUE(contains(error_of(pendulum(1e-3, 1e-12)), "constraint 'rod'"));
+  EXPECT_NO_THROW(complete(pendulum(1e3, 1e-8)));
+  // and within it at either size
+  EXPECT_NO_THROW(complete(pendulum(1e-3, 1e-15)));
+  EXPECT_TRUE(contains(error_of(pendulum(1e3, 1e-5)), "constraint 'rod'"));
+  // the fraction itself: Ψ = 2e-5 m² with |∇Ψ| = 2e3 m is 1e-8 m, 1e-11 of 1000 m
+  EXPECT_NEAR(relative_residual(2e-5, Eigen::RowVector2d(0, -2e3), Eigen::Vector2d(0, -1e3)), 1e-11,
+              1e-24);
 }
 
 // A sphere rolling on a plane (Euler parameters): given its forward speed, its spin follows from

@@ -16,8 +16,18 @@
 
 namespace unidyn {
 
-// Residuals of the constraints at the initial state beyond this are violations (model units).
-inline constexpr double kInitialStateTolerance = 1e-10;
+// One tolerance for "a state satisfies its constraints", the same for a simulation's start,
+// `check`, the analyses and Python: a constraint's residual measured as a distance — |Ψ_k| over the
+// length of its gradient ∂Ψ_k/∂q (in the coordinates' units), |a_k · q̇ + e_k| over |a_k| (in the
+// rates') — at most 1e-10 of the state's size (its largest |q_i|, or |q̇_i|; 1 where all are 0). A
+// model in millimetres and one in kilometres are held alike, and Ψ = x² + y² − L² (m²) as
+// Ψ = |r| − L (m).
+inline constexpr double kConstraintTolerance = 1e-10;
+
+// A residual as that fraction: |residual| / |gradient| / size(values) (|residual| / size where the
+// gradient is 0).
+double relative_residual(double residual, const Eigen::Ref<const Eigen::RowVectorXd>& gradient,
+                         const Eigen::VectorXd& values);
 
 // The given values violate a constraint, or leave too few free values to satisfy it: bad input.
 class InitialStateError : public std::invalid_argument {

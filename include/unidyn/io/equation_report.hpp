@@ -32,6 +32,14 @@ void write_lagrange_json(std::ostream& out, const System& system, const Equation
 void write_second_form(std::ostream& out, const System& system, const EquationsOfMotion& eq,
                        const SecondForm& form, EquationFormat format);
 
+// Kane's equations (10.16): for each coordinate u^r its partial velocities and partial angular
+// velocities (from `form`), the generalised active force F_r = Σ F · ∂v/∂u̇^r + M · ∂ω/∂u̇^r −
+// ∂U/∂u^r (+ Σ_k λ_k a_k^r) and the generalised inertia force F*_r = −Σ m a · ∂v/∂u̇^r −
+// Σ (J ω̇ + ω × J ω) · ∂ω/∂u̇^r, from Kane's own sums (`eq` of kane_equations: F*_r = −(M q̈ + c)_r),
+// and F_r + F*_r = 0.
+void write_kane(std::ostream& out, const System& system, const EquationsOfMotion& eq,
+                const SecondForm& form, EquationFormat format);
+
 // Newton's second law for each particle, m a = F + R, component by component on E1, E2, E3.
 void write_newton(std::ostream& out, const System& system, const NewtonEquations& newton,
                   EquationFormat format);
