@@ -4,6 +4,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -378,10 +379,19 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
   summary.energy_not_conserved = energy_not_conserved(system);
   for (const auto& c : system.constraints) summary.multipliers.push_back({c.name});
 
-  // y = (q, q̇), y' = (q̇, q̈)
+  // y = (q, q̇), y' = (q̇, q̈). Equations that are not finite at a state the integrator tries give
+  // a derivative that is not finite: a Runge–Kutta step is rejected and shrunk, CVODE takes it as a
+  // recoverable error and retries with a smaller step; why is said if the run fails all the same.
   Eigen::VectorXd qddot, lambda;
+  std::string not_finite;
   const OdeFunction rhs = [&](double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
-    compiled.solve(t, y.head(n), y.tail(n), parameters, qddot, lambda, data);
+    try {
+      compiled.solve(t, y.head(n), y.tail(n), parameters, qddot, lambda, data);
+    } catch (const NotFiniteState& e) {
+      not_finite = e.what();
+      dydt.setConstant(std::numeric_limits<double>::quiet_NaN());
+      return;
+    }
     dydt.head(n) = y.tail(n);
     dydt.tail(n) = qddot;
   };
@@ -399,7 +409,14 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
   // One output row at (t, y): solve for q̈ and λ, observe, check residuals, hand it on.
   const auto emit = [&](double t, const Eigen::VectorXd& y) {
     const Eigen::VectorXd q = y.head(n), qdot = y.tail(n);
-    compiled.solve(t, q, qdot, parameters, qddot, lambda, data);
+    try {
+      compiled.solve(t, q, qdot, parameters, qddot, lambda, data);
+    } catch (const NotFiniteState& e) {
+      // the row's state, interpolated between steps, is off where the equations are finite
+      throw RowRefused(t, std::string(e.what()) +
+                              " (the state the integrator gives for this row is outside where the "
+                              "equations are finite: a tighter --rtol keeps it inside)");
+    }
     compiled.observe(t, q, qdot, qddot, lambda, parameters, observed, data);
     row.assign(1, t);
     row.insert(row.end(), q.data(), q.data() + n);
@@ -577,6 +594,10 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     summary.stopped = result.stopped;
     summary.event_rows = result.event_rows;
     summary.message = result.message;
+    if (!result.ok && !not_finite.empty()) {
+      summary.message +=
+          " (the equations were not finite at a state the integrator tried: " + not_finite + ")";
+    }
     summary.failure_time = result.t_failure;
     summary.stats = result.stats;
   } catch (const RowRefused& e) {

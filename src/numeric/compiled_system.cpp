@@ -360,7 +360,7 @@ void CompiledSystem::solve(double t, StateRef q, StateRef qdot, std::span<const 
   data.constraint_bias = Eigen::Map<const Eigen::VectorXd>(constraint_rows + m_ * n_, Mc);
 
   if (!all_finite(M, n_ * n_)) {
-    throw std::runtime_error("the mass matrix is not finite at t = " + std::to_string(t));
+    throw NotFiniteState("the mass matrix is not finite at t = " + std::to_string(t));
   }
   if (!friction_constraint_.empty()) {
     evaluate_friction(t, q, qdot, parameters, data);

@@ -12,6 +12,7 @@
 #include <array>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -80,6 +81,15 @@ struct CompiledSystemData {
   std::vector<FrictionPhase> friction_phase;
   std::vector<FrictionValues> friction;
   std::vector<Eigen::Vector3d> contact_force;
+};
+
+// The equations are not finite at a state (M with a NaN or an ∞: outside the model's domain, a
+// square root of a negative number): thrown by CompiledSystem::solve. An integrator that proposed
+// the state on its way (a trial stage, a Newton iterate inside CVODE) takes it as a step to shrink,
+// not as the end of the run (integrate/simulation.cpp).
+class NotFiniteState : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 // How the compiled equations are evaluated.
