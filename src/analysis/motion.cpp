@@ -29,8 +29,11 @@ MotionSolution integrate_motion(const CompiledSystem& compiled, const OperatingP
     if (visit) visit(t, F);
     dydt.head(n) = here.qdot;
     dydt.segment(n, n) = here.qddot;
-    Eigen::Map<MatrixXd>(dydt.data() + 2 * n, states, states) =
-        F * Eigen::Map<const MatrixXd>(y.data() + 2 * n, states, states);
+    // Φ' = F Φ (without Φ, the motion alone: F is only looked at)
+    if (states > 0) {
+      Eigen::Map<MatrixXd>(dydt.data() + 2 * n, states, states) =
+          F * Eigen::Map<const MatrixXd>(y.data() + 2 * n, states, states);
+    }
   };
   DormandPrinceOptions options = DormandPrinceOptions::dop853();
   options.rtol = kTolerance;
