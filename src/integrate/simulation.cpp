@@ -528,7 +528,10 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     return AfterEvent::restart;
   };
 
-  // Integrate with the projection after every step; rows come through `emit`.
+  // Integrate with the projection after every step; rows come through `emit`. The stepper
+  // outlives the attempt: a run its rows stop (Ctrl-C, a full disk) still counts its steps.
+  std::optional<CompiledNaturalSystem> natural;
+  std::unique_ptr<Stepper> stepper;
   try {
     const bool project = options.project && compiled.constraint_count() > 0;
     const std::function<void(double, Eigen::VectorXd&)> projection = [&](double t,
@@ -540,8 +543,6 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     const bool inside = options.method == "cvode";
     // RATTLE keeps the constraints itself (a projection would spoil its symplecticity)
     const bool symplectic = options.method.starts_with("rattle");
-    std::optional<CompiledNaturalSystem> natural;
-    std::unique_ptr<Stepper> stepper;
     if (symplectic) {
       natural.emplace(system, kane_equations(system));
       RattleOptions o;
@@ -604,6 +605,7 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     summary.ok = false;
     summary.message = e.what();
     summary.failure_time = e.t;
+    if (stepper) summary.stats = stepper->stats();
   } catch (const std::exception& e) {
     // the initial state itself cannot be solved (or its output row failed)
     summary.ok = false;
