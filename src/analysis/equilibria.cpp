@@ -7,6 +7,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "configuration_key.hpp"
 #include "energy_minimum.hpp"
 #include "steady_balance.hpp"
 #include "tape_derivatives.hpp"
@@ -257,6 +258,9 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::normal_distribution<double> normal(0.0, 1.0);
   const std::vector<std::vector<Index>> quaternions = euler_parameter_groups(system);
+  // the configurations of the equilibria at rest found, to list one attitude once
+  ConfigurationKey configuration(system, compiled);
+  std::vector<std::vector<double>> at_rest;
   const auto is_free = [&](Index i) {
     return std::find(balance.free_q.begin(), balance.free_q.end(), i) != balance.free_q.end();
   };
@@ -338,6 +342,14 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
       return true;
     };
     if (std::any_of(found.begin(), found.end(), same)) continue;
+    // at rest where one found already is, in other coordinates (the other Euler angles)
+    const bool rests = e.point.qdot.isZero(0.0);
+    const std::vector<double> key = rests ? configuration.at(e.point) : std::vector<double>{};
+    if (rests && std::any_of(at_rest.begin(), at_rest.end(),
+                             [&](const auto& other) { return configuration.same(key, other); })) {
+      continue;
+    }
+    if (rests) at_rest.push_back(key);
     e.modes = analyse_modes(e.linearization);
     // the balance's Jacobian: directions along which it does not change, ignorable ones aside
     {

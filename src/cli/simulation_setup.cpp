@@ -11,6 +11,8 @@
 #include "unidyn/equations/reduction.hpp"
 #include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/io/model_file.hpp"
+#include "unidyn/symbolic/printable_text.hpp"
+#include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn::cli {
 
@@ -83,6 +85,12 @@ std::string run_headline(const System& system, const SimulationOptions& options,
 std::string run_figures(const System& system, const SimulationSummary& s) {
   fmt::memory_buffer buffer;
   const auto out = std::back_inserter(buffer);
+  // the potentials unidyn found for forces given without one, in the energy E = T + U
+  for (const ForceElement& f : system.forces) {
+    if (!f.potential_proven) continue;
+    fmt::format_to(out, "  U of {} (line {}) found by unidyn (its curl is 0): {}\n", f.label,
+                   f.where.line, printable(to_text(f.potential)));
+  }
   if (s.has_energy && s.energy_not_conserved.empty()) {
     fmt::format_to(out, "  energy: initial {:.12g}, relative drift {:.3g}\n", s.energy_initial,
                    s.energy_relative_drift);

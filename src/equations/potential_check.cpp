@@ -77,4 +77,18 @@ PotentialCheck potential_check(const System& system, std::size_t element) {
   return check;
 }
 
+void adopt_proven_potentials(System& system) {
+  for (std::size_t k = 0; k < system.forces.size(); ++k) {
+    ForceElement& element = system.forces[k];
+    const bool given_without_potential =
+        element.kind == ForceElement::Kind::force || element.kind == ForceElement::Kind::moment;
+    if (!given_without_potential || element.conservative) continue;
+    const PotentialCheck check = potential_check(system, k);
+    if (!check.conservative || !check.potential) continue;
+    element.conservative = true;
+    element.potential_proven = true;
+    element.potential = *check.potential;
+  }
+}
+
 }  // namespace unidyn

@@ -53,6 +53,7 @@ std::string Contacts::switch_on(double t, const Eigen::VectorXd& q, Eigen::Vecto
     active_[c] = true;
     // c's rate jumps to 0, the rows that hold keep theirs
     const double nu = impulse(t, q, qdot, c, 0.0);
+    if (nu != 0.0) ++dissipative_impacts_;
     text += "; '" + system_.constraints[c].name + "' switches on: impulse " + detail::to_text(nu);
   }
   return text;
@@ -131,6 +132,7 @@ std::string Contacts::handle(double t, const Eigen::VectorXd& q, Eigen::VectorXd
   // rate ≥ 0: back at Ψ = 0 right after leaving it, too soon to resolve — a resting contact
   if (rate < 0.0 && e * std::abs(rate) > kRestingRebound) {
     const double nu = impulse(t, q, qdot, k, -e * rate);
+    if (e < 1.0) ++dissipative_impacts_;
     return "impact on " + name + ": rate " + detail::to_text(rate) + " -> " +
            detail::to_text(-e * rate) + " (restitution " + detail::to_text(e) + "), impulse " +
            detail::to_text(nu);
@@ -138,6 +140,7 @@ std::string Contacts::handle(double t, const Eigen::VectorXd& q, Eigen::VectorXd
   // a plastic impact: the constraints it switches off take no part
   switch_by(k, true);
   const double nu = impulse(t, q, qdot, k, 0.0);
+  if (nu != 0.0) ++dissipative_impacts_;
   if (try_hold(t, q, qdot, k)) {
     std::string text = "contact " + name + " made (approach rate " + detail::to_text(rate) +
                        ", impulse " + detail::to_text(nu) + ")";

@@ -50,9 +50,10 @@ std::string fmt_parameter(const std::string& name, double value, const Expr& def
   return text.str();
 }
 
-// Why T + U is not conserved in the model, or "" (its forces all have potentials: see
-// has_energy_column).
-std::string energy_not_conserved(const System& system) {
+// What changes T + U whatever happens in a run, or "" (the forces all have potentials: see
+// has_energy_column): a model driven by t, impulses applied. Friction and impacts count only when
+// they do work in the run (dissipation_in_run).
+std::string energy_changed_by(const System& system) {
   const Expr& t = system.time();
   const auto on_t = [&](const VectorExpr& v) { return v[0].has(t) || v[1].has(t) || v[2].has(t); };
   bool driven = false;
@@ -66,19 +67,29 @@ std::string energy_not_conserved(const System& system) {
   for (const auto& b : system.bodies) {
     driven = driven || on_t(b.center) || Expr(b.rotation).has(t);
   }
-  bool friction = false, impacts = false;
-  for (const auto& c : system.constraints) {
-    driven = driven || c.expression.has(t);
-    friction = friction || c.friction.has_value();
-    // a constraint switched on takes its impulse as a plastic impact does
-    impacts = impacts || (c.unilateral && c.restitution != 1) || !c.off_while.empty();
-  }
+  for (const auto& c : system.constraints) driven = driven || c.expression.has(t);
+  std::string why = driven ? "driven by t" : "";
+  if (!system.impulses.empty()) why += (why.empty() ? "" : "; ") + std::string("impulses applied");
+  return why;
+}
+
+// What took energy away during the run: friction (−∫ R_t · v_slip dt, its power integrated
+// over the rows by the trapezoidal rule, beyond 1e-10 of the energy's scale) and the impulses of
+// impacts that were not elastic.
+std::string dissipation_in_run(double friction_work, double energy_scale,
+                               std::size_t dissipative_impacts) {
   std::string why;
-  const auto add = [&](const char* text) { why += (why.empty() ? "" : "; ") + std::string(text); };
-  if (driven) add("driven by t");
-  if (friction) add("dissipative: friction");
-  if (impacts) add("dissipative: impacts with restitution < 1");
-  if (!system.impulses.empty()) add("impulses applied");
+  if (std::abs(friction_work) > 1e-10 * energy_scale) {
+    std::ostringstream taken;
+    taken.precision(3);
+    taken << -friction_work;
+    why = "dissipative: friction took " + taken.str() + " (over the rows)";
+  }
+  if (dissipative_impacts > 0) {
+    why += (why.empty() ? "" : "; ") + std::string("dissipative: ") +
+           std::to_string(dissipative_impacts) +
+           (dissipative_impacts == 1 ? " impact" : " impacts") + " with restitution < 1";
+  }
   return why;
 }
 
@@ -156,29 +167,57 @@ class Projector {
   std::vector<Eigen::Index> position_rows_, velocity_rows_;
 };
 
+// What stops a run at the gimbal lock of `body`'s Euler angles, with the advice.
+std::string gimbal_lock_stop(const Body& body, double volume, const Vec3& angles) {
+  return "the " + body.chart->set.name() + " Euler angles of body '" + body.name +
+         "' reached gimbal lock (|[g1, g2, g3]| = " + std::to_string(volume) + ", second angle " +
+         std::to_string(angles[1]) +
+         " rad): describe its rotation with a quaternion, or with an Euler set whose singular "
+         "angle this motion avoids";
+}
+
+// The Euler angles of the bodies in state y nearest gimbal lock: |[g1, g2, g3]| and the body.
+std::pair<double, const Body*> nearest_gimbal_lock(const System& system, const Eigen::VectorXd& y,
+                                                   Vec3& angles) {
+  std::pair<double, const Body*> nearest{std::numeric_limits<double>::infinity(), nullptr};
+  for (const Body& body : system.bodies) {
+    if (!body.chart) continue;
+    const auto& c = body.chart->coordinates;
+    const Vec3 a(y[static_cast<Eigen::Index>(c[0])], y[static_cast<Eigen::Index>(c[1])],
+                 y[static_cast<Eigen::Index>(c[2])]);
+    const double volume = std::abs(euler_basis_volume(body.chart->set, a));
+    if (volume < nearest.first) {
+      nearest = {volume, &body};
+      angles = a;
+    }
+  }
+  return nearest;
+}
+
 // (§6.8) The Euler-angle charts of the bodies: the closest approach to gimbal lock goes into the
 // summary, and a run that reaches it stops with a message that says what to do instead.
 void watch_euler_charts(const System& system, double t, const Eigen::VectorXd& y,
                         SimulationSummary& summary) {
-  for (const Body& body : system.bodies) {
-    if (!body.chart) continue;
-    const auto& c = body.chart->coordinates;
-    const Vec3 angles(y[static_cast<Eigen::Index>(c[0])], y[static_cast<Eigen::Index>(c[1])],
-                      y[static_cast<Eigen::Index>(c[2])]);
-    const double volume = std::abs(euler_basis_volume(body.chart->set, angles));
-    if (volume < summary.closest_gimbal_lock) {
-      summary.closest_gimbal_lock = volume;
-      summary.closest_gimbal_lock_time = t;
-    }
-    if (volume <= kGimbalLockStop) {
-      throw std::runtime_error(
-          "the " + body.chart->set.name() + " Euler angles of body '" + body.name +
-          "' reached gimbal lock (|[g1, g2, g3]| = " + std::to_string(volume) + ", second angle " +
-          std::to_string(angles[1]) +
-          " rad): describe its rotation with a quaternion, or with an Euler set whose singular "
-          "angle this motion avoids");
-    }
+  Vec3 angles;
+  const auto [volume, body] = nearest_gimbal_lock(system, y, angles);
+  if (!body) return;
+  if (volume < summary.closest_gimbal_lock) {
+    summary.closest_gimbal_lock = volume;
+    summary.closest_gimbal_lock_time = t;
   }
+  if (volume <= kGimbalLockStop) throw std::runtime_error(gimbal_lock_stop(*body, volume, angles));
+}
+
+// A run that failed (its step size collapsed) where Euler angles are near gimbal lock failed
+// because of it: the rates of the angles grow like 1/|[g1, g2, g3]| there. The lock and the
+// advice, then what the integrator said; the integrator's message alone elsewhere.
+std::string failure_near_gimbal_lock(const System& system, const Eigen::VectorXd& y,
+                                     const std::string& message) {
+  Vec3 angles;
+  const auto [volume, body] = nearest_gimbal_lock(system, y, angles);
+  if (!body || volume > kGimbalLockNear) return message;
+  if (message.find("reached gimbal lock") != std::string::npos) return message;  // the watch's
+  return gimbal_lock_stop(*body, volume, angles) + " (" + message + ")";
 }
 
 // The step of a fixed-step method: `step`, else output_step / 10, made a whole number of steps
@@ -376,7 +415,6 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
   Projector projector(compiled, parameters);
   Contacts contacts(system, compiled, parameters);
   summary.has_energy = has_energy_column(system);
-  summary.energy_not_conserved = energy_not_conserved(system);
   for (const auto& c : system.constraints) summary.multipliers.push_back({c.name});
 
   // y = (q, q̇), y' = (q̇, q̈). Equations that are not finite at a state the integrator tries give
@@ -405,6 +443,8 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
   const std::size_t stops_begin = conserved_begin + n_conserved;
   std::vector<double> conserved_initial(n_conserved);
   double energy_scale = 0.0, max_energy_error = 0.0;
+  double friction_work = 0.0, last_friction_power = 0.0;
+  double previous_row_time = start.t0;
 
   // One output row at (t, y): solve for q̈ and λ, observe, check residuals, hand it on.
   const auto emit = [&](double t, const Eigen::VectorXd& y) {
@@ -443,6 +483,17 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
       range.held = true;
     }
     energy_scale = std::max(energy_scale, T + std::abs(U));
+    // the friction's power R_t . v_slip, integrated over the rows
+    double friction_power = 0.0;
+    for (std::size_t c = 0; c < data.friction.size(); ++c) {
+      const FrictionValues& f = data.friction[c];
+      friction_power += f.tangential_part(data.contact_force[c]).dot(f.slip);
+    }
+    if (summary.rows > 0) {
+      friction_work += 0.5 * (friction_power + last_friction_power) * (t - previous_row_time);
+    }
+    last_friction_power = friction_power;
+    previous_row_time = t;
     max_energy_error = std::max(max_energy_error, std::abs(E - summary.energy_initial));
     for (std::size_t c = 0; c < n_conserved; ++c) {
       const double c0 = conserved_initial[c];
@@ -594,7 +645,8 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     summary.ok = result.ok;
     summary.stopped = result.stopped;
     summary.event_rows = result.event_rows;
-    summary.message = result.message;
+    summary.message =
+        result.ok ? result.message : failure_near_gimbal_lock(system, result.y, result.message);
     if (!result.ok && !not_finite.empty()) {
       summary.message +=
           " (the equations were not finite at a state the integrator tried: " + not_finite + ")";
@@ -613,6 +665,13 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     summary.failure_time = start.t0;
   }
   summary.energy_relative_drift = max_energy_error / std::max(energy_scale, 1e-300);
+  // what changed the energy: the model's drive and impulses, the run's friction and impacts
+  summary.energy_not_conserved = energy_changed_by(system);
+  const std::string dissipated =
+      dissipation_in_run(friction_work, energy_scale, contacts.dissipative_impacts());
+  if (!dissipated.empty()) {
+    summary.energy_not_conserved += (summary.energy_not_conserved.empty() ? "" : "; ") + dissipated;
+  }
   return summary;
 }
 

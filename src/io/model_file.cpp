@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "model_reader.hpp"
+#include "unidyn/equations/potential_check.hpp"
 
 namespace unidyn {
 namespace model_reading {
@@ -139,7 +140,10 @@ System parse_model(const std::string& text, const std::string& file) {
     // yaml-cpp's marks do not count a byte-order mark
     std::string_view source = text;
     if (source.starts_with("\xEF\xBB\xBF")) source.remove_prefix(3);
-    return ModelReader(file, source).read(root);
+    System system = ModelReader(file, source).read(root);
+    // what unidyn proves conservative counts as such everywhere (said by derive and simulate)
+    adopt_proven_potentials(system);
+    return system;
   } catch (const YAML::Exception& e) {
     throw ModelError({file, e.mark.line + 1, e.mark.column + 1}, e.msg);
   }

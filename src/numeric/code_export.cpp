@@ -101,11 +101,13 @@ std::string tape_body(const Tape& tape, const std::vector<std::string>& inputs,
   const TapeLanguage dialect = tape_language(language);
   for (const TapeInstruction& i : tape.instructions()) {
     if (i.op == TapeOp::sincos) {
+      // sin x and cos x into dst and b; the one whose register holds x is written last
       const std::string x = reg(i.a);
-      os << indent << reg(i.dst) << " = " << detail::tape_function("sin", dialect) << "(" << x
-         << ")" << end << "\n";
-      os << indent << reg(i.b) << " = " << detail::tape_function("cos", dialect) << "(" << x << ")"
-         << end << "\n";
+      const std::string sine = indent + reg(i.dst) + " = " + detail::tape_function("sin", dialect) +
+                               "(" + x + ")" + end + "\n";
+      const std::string cosine = indent + reg(i.b) + " = " + detail::tape_function("cos", dialect) +
+                                 "(" + x + ")" + end + "\n";
+      os << (i.dst == i.a ? cosine + sine : sine + cosine);
       continue;
     }
     os << indent << reg(i.dst) << " = " << detail::tape_operation(i.op, reg(i.a), reg(i.b), dialect)

@@ -313,5 +313,38 @@ TEST(Equilibria, CyclicInputRefusedWithItsReason) {
   EXPECT_THROW(parse_given_values(system, {"p(theta)=5"}), std::invalid_argument);
 }
 
+// A body hung at its pivot O (centre L0 e3) and turned by a spring from its point x̄ + e1 − L0 e3
+// = e1 to 3 E1: U = m g L0 Q33 − 3 k Q11 + const, a linear function of Q whose coefficient matrix
+// diag(−3k, 0, m g L0) has distinct singular values, so its critical points on SO(3) are the four
+// rotations diag(±1, ±1, ±1) with det +1 — and only diag(1, −1, −1) (e1 = E1, e3 = −E3) is its
+// minimum. Each is reached by two solutions of its 3-2-1 angles, (ψ, θ, φ) and
+// (ψ + π, π − θ, φ + π), both away from gimbal lock (θ = 0 or π): four attitudes, listed once.
+TEST(Equilibria, OneAttitudeUnderTwoEulerDescriptionsIsOneEquilibrium) {
+  const System system = parse_model(
+      "unidyn: 1\nparameters: {m: 1.0, g: 9.81, L0: 0.5, k: 2.0}\ncoordinates: [psi, theta, phi]\n"
+      "bodies:\n  B: {mass: m, inertia: [0.1, 0.2, 0.3], rotation: {euler: 3-2-1, angles: [psi, "
+      "theta, phi]}, center: L0*B.e3}\n"
+      "forces:\n  - gravity: -g*E3\n"
+      "  - spring: {from: {on: B, point: [1, 0, -L0]}, to: [3, 0, 0], stiffness: k}\n",
+      "hung.yaml");
+  const CompiledSystem compiled(system, lagrange_equations(system));
+  const EquilibriumSearchResult result =
+      find_equilibria(system, compiled, {}, initial_state(system, {}).parameters);
+  ASSERT_EQ(result.equilibria.size(), 4u);
+  int minima = 0;
+  for (const Equilibrium& e : result.equilibria) {
+    const double psi = e.point.q[0], theta = e.point.q[1], phi = e.point.q[2];
+    // Q11 = cos ψ cos θ, Q33 = cos θ cos φ for 3-2-1 angles: each ±1
+    EXPECT_NEAR(std::abs(std::cos(psi) * std::cos(theta)), 1.0, 1e-9);
+    EXPECT_NEAR(std::abs(std::cos(theta) * std::cos(phi)), 1.0, 1e-9);
+    if (e.potential_minimum.value_or(false)) {
+      ++minima;
+      EXPECT_NEAR(std::cos(psi) * std::cos(theta), 1.0, 1e-9);
+      EXPECT_NEAR(std::cos(theta) * std::cos(phi), -1.0, 1e-9);
+    }
+  }
+  EXPECT_EQ(minima, 1);
+}
+
 }  // namespace
 }  // namespace unidyn

@@ -1,8 +1,8 @@
 // `derive --format c|python` (numeric/code_export.hpp): the exported functions, compiled with the
 // system's C compiler or run by python3, give q'' and λ equal to the simulation's own solve
 // (CompiledSystem::solve) at random states, to round-off, for a model without constraints, one
-// with rolling constraints and one with Euler parameters (M only semi-definite). The MATLAB file is
-// checked for its signature and solve only: no MATLAB or Octave runs here.
+// with rolling constraints, one with Euler parameters (M only semi-definite) and a closed loop. The
+// MATLAB file is checked for its signature and solve only: no MATLAB or Octave runs here.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -106,7 +106,9 @@ void write_states(const std::string& path, const std::vector<std::vector<double>
   }
 }
 
-const char* const kModels[] = {"double-pendulum", "rolling-disk", "torque-free-quaternion"};
+// Andrews' squeezer: sin and cos of angle sums, whose tape writes sin(x) over x's register
+const char* const kModels[] = {"double-pendulum", "rolling-disk", "torque-free-quaternion",
+                               "andrews-squeezer"};
 
 TEST(CodeExport, CompiledCGivesTheSimulationsAccelerations) {
   if (std::system("command -v cc >/dev/null 2>&1") != 0) GTEST_SKIP() << "no C compiler (cc)";

@@ -26,4 +26,9 @@ struct PotentialCheck {
 // The check for force element `element` of the system.
 PotentialCheck potential_check(const System& system, std::size_t element);
 
+// The one decision of what is conservative: every `force:` and `moment:` whose check finds U in
+// closed form becomes a conservative element with that U (potential_proven), so that its U is in
+// the energy T + U of every command, in −∂U/∂q of the equations, and in the symplectic methods.
+void adopt_proven_potentials(System& system);
+
 }  // namespace unidyn

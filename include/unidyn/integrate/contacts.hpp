@@ -39,6 +39,10 @@ class Contacts {
   // returns what happened, for the run summary ("contact 'table' lost ...").
   std::string handle(double t, const Eigen::VectorXd& q, Eigen::VectorXd& qdot, std::size_t which);
 
+  // The impulses so far that took kinetic energy away: impacts with restitution < 1, contacts
+  // made (plastic) and constraints switched on with a jump.
+  std::size_t dissipative_impacts() const { return dissipative_impacts_; }
+
  private:
   // q̇ after an impulse that sets the rates of the rows to `target` (others active: 0 change);
   // returns row k's impulse ν.
@@ -60,6 +64,7 @@ class Contacts {
   std::vector<double> restitution_;
   std::vector<bool> active_;
   std::vector<std::pair<std::size_t, std::size_t>> switched_;  // (constraint, its contact)
+  std::size_t dissipative_impacts_ = 0;
 };
 
 // Below this rebound rate (of Ψ̇, in the constraint's units per second) an impact ends in contact:

@@ -104,6 +104,9 @@ struct ForceElement {
   Expr potential = 0;
   std::vector<ParticleForce> forces;
   bool conservative = false;
+  // A `force:` or `moment:` whose potential unidyn proved and integrated (potential_check.hpp):
+  // conservative, with that U, although the model gave none.
+  bool potential_proven = false;
   std::vector<BodyForce> body_forces;
   std::vector<BodyMoment> moments;
 };
