@@ -45,7 +45,12 @@ TEST(PotentialCheck, FourForcesOfProblem21) {
   // as `unidyn derive` says it
   const std::vector<std::string> lines = potential_lines(system);
   ASSERT_EQ(lines.size(), 4u);
-  EXPECT_EQ(lines[1], "force (line 10) is conservative: U = " + to_text(*second.potential));
+  // (and, read from its file, the element is conservative with that U everywhere)
+  EXPECT_EQ(lines[1], "force (line 10) is conservative: U = " + to_text(*second.potential) +
+                          " (in the energy and in -dU/dq)");
+  EXPECT_TRUE(system.forces[1].conservative && system.forces[1].potential_proven);
+  EXPECT_FALSE(system.forces[0].conservative || system.forces[2].conservative ||
+               system.forces[3].conservative);
   EXPECT_TRUE(lines[0].starts_with("force (line 9) is not conservative: dPhi_x2/dx3")) << lines[0];
 }
 
