@@ -160,14 +160,18 @@ void add_sweep_command(CLI::App& app, SweepCommand& c) {
   c.plan->add_option("--grid", c.grid, "NAME=FROM:TO:COUNT: a parameter, q or der(q) on a grid");
   c.plan->add_option("--random", c.random, "NAME=U(A,B) or NAME=N(MEAN,SD): drawn per run");
   c.plan->add_option("--samples", c.samples, "random draws per grid point")->capture_default_str();
-  c.plan->add_option("--seed", c.seed, "the draws' seed")->capture_default_str();
+  // checked as text, before the conversion that would take -1 for 2^64 - 1
+  c.plan->add_option("--seed", c.seed, "the draws' seed")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   c.plan->add_option("--modes-at", c.modes_at,
                      "NAME=VALUE of an operating point (as `unidyn modes --at`): each run also "
                      "gives the stability and eigenvalues there with its parameters");
-  c.plan->add_option("--t-end", c.t_end, "end time of every run");
-  c.plan->add_option("--output-step", c.output_step, "time between rows");
+  c.plan->add_option("--t-end", c.t_end, "end time of every run")->check(CLI::PositiveNumber);
+  c.plan->add_option("--output-step", c.output_step, "time between rows")
+      ->check(CLI::PositiveNumber);
   c.plan->add_option("--method", c.method, integration_method_choices());
-  c.plan->add_option("--rtol", c.rtol, "relative tolerance");
+  c.plan->add_option("--rtol", c.rtol, "relative tolerance")->check(CLI::PositiveNumber);
   c.plan->add_option("-o,--output", c.output, "the manifest (default MODEL.sweep.yaml)");
 
   c.run = c.sweep->add_subcommand("run", "Run a chunk of a manifest's runs (done ones skipped)");

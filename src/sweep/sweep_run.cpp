@@ -1,9 +1,7 @@
 // Running a chunk of a sweep, gathering its results, and the launchers (sweep/sweep_run.hpp).
 #include "unidyn/sweep/sweep_run.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -18,6 +16,7 @@
 #include "unidyn/equations/kane.hpp"
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/integrate/initial_state.hpp"
+#include "unidyn/io/atomic_file.hpp"
 #include "unidyn/io/csv.hpp"
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/numeric/compiled_system.hpp"
@@ -36,37 +35,6 @@ std::string result_header(const SweepManifest& m, const std::vector<std::string>
   if (!m.modes_at.empty()) out += ",stability,eigenvalues";
   for (const auto& c : columns) out += "," + csv_field("final." + c);
   return out + "\n";
-}
-
-// `text` as the file `path`, whole or not at all: a temporary file beside it, synced, renamed
-// into place, and the directory synced.
-void write_atomically(const fs::path& path, const std::string& text) {
-  const fs::path temporary =
-      path.parent_path() / fmt::format(".{}.{}.tmp", path.filename().string(), getpid());
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error("cannot write " + temporary.string());
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n <= 0) {
-      ::close(fd);
-      std::remove(temporary.c_str());
-      throw std::runtime_error("cannot write " + temporary.string());
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write " + temporary.string());
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot rename into " + path.string());
-  }
-  if (const int dir = ::open(path.parent_path().c_str(), O_RDONLY | O_DIRECTORY); dir >= 0) {
-    ::fsync(dir);
-    ::close(dir);
-  }
 }
 
 // The modes of the manifest's operating point with a run's parameters: its verdict and
