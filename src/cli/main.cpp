@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -24,6 +25,9 @@
 #endif
 
 int main(int argc, char** argv) {
+  // past a file-size limit (ulimit -f) a write fails with EFBIG, which the writers handle (the
+  // file cut back to its last whole row, exit 1), instead of SIGXFSZ killing the process mid-row
+  std::signal(SIGXFSZ, SIG_IGN);
   // the same process layout in every run: equal input, byte-identical output
   unidyn::cli::use_fixed_layout(argv);
   CLI::App app{"unidyn: engineering dynamics after O'Reilly, Intermediate Dynamics for Engineers"};

@@ -215,5 +215,20 @@ TEST(HostileInput, SweepPlanRefusesNegativeValues) {
   }
 }
 
+// Past a file-size limit (ulimit -f, in KiB) the CSV cannot grow: the run fails (exit 1, not
+// SIGXFSZ's 153) with the file cut back to its last whole row, all of them counted.
+TEST(HostileInput, AFileSizeLimitEndsTheRunWithWholeRows) {
+  const std::string csv = temp_path("limited.csv");
+  const Outcome r = run("simulate kepler --t-end 1000 -o '" + csv + "'", "ulimit -f 2048;");
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  const std::string text = read_file(csv);
+  ASSERT_FALSE(text.empty());
+  EXPECT_LE(text.size(), 2048u * 1024u);
+  EXPECT_EQ(text.back(), '\n');
+  const Csv rows = parse_csv(text);
+  EXPECT_TRUE(contains(r.out, std::to_string(rows.rows.size()) + " rows written")) << r.out;
+  std::remove(csv.c_str());
+}
+
 }  // namespace
 }  // namespace unidyn
