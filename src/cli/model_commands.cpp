@@ -305,8 +305,10 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
   const auto run_start = std::chrono::steady_clock::now();
   // Ctrl-C ends the run after the row being written, with the rows kept and the summary
   const InterruptWatch interrupt;
+  SimulationOptions watched = options;
+  watched.interrupted = [&] { return interrupt.requested(); };
   const SimulationSummary s =
-      simulate(system, compiled, start, options, [&](const std::vector<double>& row) {
+      simulate(system, compiled, start, watched, [&](const std::vector<double>& row) {
         if (interrupt.requested()) {
           throw std::runtime_error("interrupted (Ctrl-C)");
         }
