@@ -100,9 +100,12 @@ int run_chunk(const SweepCommand& c) {
                                  ? std::pair<std::size_t, std::size_t>{0, manifest.runs.size()}
                                  : parse_rows(c.rows, manifest.runs.size());
   const fs::path directory = results_directory(c);
-  const ChunkReport report = run_sweep_rows(manifest, first, last, directory, std::cout);
-  fmt::print("runs {} to {}: {} made ({} of them failed), {} already done, in {}\n", first, last,
-             report.done, report.failed, report.skipped, printable(directory.string()));
+  const ChunkReport report = run_sweep_rows(manifest, sha256_hex(read_text(c.model)), first, last,
+                                            directory, std::cout);
+  fmt::print("runs {} to {}: {} made ({} of them failed, {} made again over a stale result), {} "
+             "already done, in {}\n",
+             first, last, report.done, report.failed, report.remade, report.skipped,
+             printable(directory.string()));
   return 0;
 }
 
@@ -110,22 +113,32 @@ int run_gather(const SweepCommand& c) {
   const SweepManifest manifest = read_manifest(c.model);
   const fs::path directory = results_directory(c);
   std::ostringstream table;
-  const std::vector<std::size_t> missing =
+  const GatherReport report =
       gather_sweep(manifest, sha256_hex(read_text(c.model)), directory, table);
+  // at most ten run numbers, then "..."
+  const auto some = [](const std::vector<std::size_t>& runs) {
+    const std::vector<std::size_t> shown(
+        runs.begin(), runs.begin() + static_cast<long>(std::min<std::size_t>(runs.size(), 10)));
+    return fmt::format("{}{}", fmt::join(shown, ", "), runs.size() > 10 ? ", ..." : "");
+  };
+  if (!report.stale.empty()) {
+    fmt::print(stderr,
+               "{} of {} results are not this manifest's or not whole (a re-plan, a copy, a cut "
+               "file): {}; no table written. `unidyn sweep run` makes them again\n",
+               report.stale.size(), manifest.runs.size(), some(report.stale));
+    return 1;
+  }
   if (c.output.empty()) {
     std::cout << table.str();
   } else {
     write_text(c.output, table.str());
   }
-  if (missing.empty()) {
+  if (report.missing.empty()) {
     fmt::print(stderr, "gathered all {} runs\n", manifest.runs.size());
     return 0;
   }
-  std::vector<std::size_t> shown(
-      missing.begin(),
-      missing.begin() + static_cast<long>(std::min<std::size_t>(missing.size(), 10)));
-  fmt::print(stderr, "{} of {} runs have no result yet: {}{}\n", missing.size(),
-             manifest.runs.size(), fmt::join(shown, ", "), missing.size() > 10 ? ", ..." : "");
+  fmt::print(stderr, "{} of {} runs have no result yet: {}\n", report.missing.size(),
+             manifest.runs.size(), some(report.missing));
   return 1;
 }
 

@@ -123,6 +123,35 @@ RunRow run_one(const SweepManifest& m, const SweepRun& run, const System& system
   return {row + "\n", s.ok};
 }
 
+// The last line of a result file: the manifest (its SHA-256) and the run it was made for,
+// written with the rest (atomically), so that a file whole and made for this run ends with it.
+std::string result_stamp(const std::string& manifest_sha256, const SweepRun& run) {
+  return fmt::format("# unidyn sweep result of manifest sha256 {}, run {}, seed {}\n",
+                     manifest_sha256, run.index, run.seed);
+}
+
+// The header and row of the result file at `path` when it is whole and was made for this run of
+// this manifest: three lines, the row starting with the run's index and seed, then its stamp.
+// None when it is not (missing, cut short, copied from another run or from before a re-plan).
+std::optional<std::pair<std::string, std::string>> valid_result(const fs::path& path,
+                                                                const std::string& manifest_sha256,
+                                                                const SweepRun& run) {
+  std::error_code error;
+  const auto size = fs::file_size(path, error);
+  if (error || size > (1u << 20)) return std::nullopt;  // a result is one row of numbers
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t first = text.find('\n');
+  const std::size_t second = first == std::string::npos ? first : text.find('\n', first + 1);
+  if (second == std::string::npos) return std::nullopt;
+  const std::string row = text.substr(first + 1, second - first - 1);
+  if (text.substr(second + 1) != result_stamp(manifest_sha256, run) ||
+      !row.starts_with(fmt::format("{},{},", run.index, run.seed))) {
+    return std::nullopt;
+  }
+  return std::pair{text.substr(0, first), row};
+}
+
 }  // namespace
 
 fs::path default_results_directory(const std::string& manifest_path) {
@@ -133,8 +162,9 @@ fs::path result_path(const fs::path& directory, std::size_t index) {
   return directory / fmt::format("run-{:07}.csv", index);
 }
 
-ChunkReport run_sweep_rows(const SweepManifest& m, std::size_t first, std::size_t last,
-                           const fs::path& directory, std::ostream& log) {
+ChunkReport run_sweep_rows(const SweepManifest& m, const std::string& manifest_sha256,
+                           std::size_t first, std::size_t last, const fs::path& directory,
+                           std::ostream& log) {
   if (first > last || last > m.runs.size()) {
     throw std::invalid_argument(
         fmt::format("--rows {}:{} is outside the manifest's {} runs", first, last, m.runs.size()));
@@ -166,38 +196,46 @@ ChunkReport run_sweep_rows(const SweepManifest& m, std::size_t first, std::size_
   ChunkReport report;
   for (std::size_t k = first; k < last; ++k) {
     const fs::path path = result_path(directory, k);
-    if (fs::exists(path)) {
+    // a result made for this run of this manifest is kept; anything else there is made again
+    if (valid_result(path, manifest_sha256, m.runs[k])) {
       ++report.skipped;
       continue;
     }
+    const bool stale = fs::exists(path);
     const RunRow row =
         run_one(m, m.runs[k], system, compiled, columns.size(), modes ? &*modes : nullptr);
-    write_atomically(path, header + row.text);
+    write_atomically(path, header + row.text + result_stamp(manifest_sha256, m.runs[k]));
     ++report.done;
+    if (stale) {
+      ++report.remade;
+      log << "run " << k << ": the result there was not this manifest's or not whole: made again\n";
+    }
     if (!row.ok) ++report.failed;
     log << "run " << k << (row.ok ? "" : " (FAILED)") << " written to " << path.string() << "\n";
   }
   return report;
 }
 
-std::vector<std::size_t> gather_sweep(const SweepManifest& m, const std::string& manifest_sha256,
-                                      const fs::path& directory, std::ostream& out) {
-  out << "# unidyn sweep of " << m.model << ", manifest sha256 " << manifest_sha256 << ", "
-      << m.runs.size() << " runs\n";
-  std::vector<std::size_t> missing;
-  bool header = false;
+GatherReport gather_sweep(const SweepManifest& m, const std::string& manifest_sha256,
+                          const fs::path& directory, std::ostream& out) {
+  GatherReport report;
+  std::string header, rows;
   for (const SweepRun& run : m.runs) {
-    std::ifstream in(result_path(directory, run.index));
-    std::string first, row;
-    if (!in || !std::getline(in, first) || !std::getline(in, row)) {
-      missing.push_back(run.index);
+    const fs::path path = result_path(directory, run.index);
+    const auto result = valid_result(path, manifest_sha256, run);
+    if (!result) {
+      (fs::exists(path) ? report.stale : report.missing).push_back(run.index);
       continue;
     }
-    if (!header) out << first << "\n";
-    header = true;
-    out << row << "\n";
+    if (header.empty()) header = result->first + "\n";
+    rows += result->second + "\n";
   }
-  return missing;
+  // no table from results that are not this manifest's
+  if (!report.stale.empty()) return report;
+  out << "# unidyn sweep of " << m.model << ", manifest sha256 " << manifest_sha256 << ", "
+      << m.runs.size() << " runs\n"
+      << header << rows;
+  return report;
 }
 
 std::pair<std::size_t, std::size_t> task_rows(std::size_t runs, std::size_t chunk,
