@@ -2,6 +2,7 @@
 // SHA-256 of its key, and loaded with dlopen only after the library has shown its key and
 // signature.
 #include "unidyn/numeric/native_code.hpp"
+#include "unidyn/numeric/shell_quoting.hpp"
 
 #include <dlfcn.h>
 #include <spawn.h>
@@ -65,13 +66,6 @@ std::string compiler_identity(const std::string& compiler) {
   if (file.empty() || ::stat(file.c_str(), &s) != 0) return compiler + " (not found)";
   return compiler + " = " + file.string() + " " + std::to_string(s.st_size) + " bytes, changed " +
          std::to_string(s.st_mtim.tv_sec) + "." + std::to_string(s.st_mtim.tv_nsec);
-}
-
-// Text in single quotes for the shell.
-std::string shell_quoted(const std::string& text) {
-  std::string out = "'";
-  for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
 }
 
 std::string read_text(const fs::path& path) {

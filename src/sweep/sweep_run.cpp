@@ -21,6 +21,8 @@
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/numeric/compiled_system.hpp"
 #include "unidyn/numeric/digest.hpp"
+#include "unidyn/numeric/shell_quoting.hpp"
+#include "unidyn/symbolic/printable_text.hpp"
 
 namespace unidyn {
 namespace {
@@ -249,41 +251,57 @@ std::pair<std::size_t, std::size_t> task_rows(std::size_t runs, std::size_t chun
   return {first, std::min(first + chunk, runs)};
 }
 
+namespace {
+
+// The lines every launcher has after its #! and #SBATCH lines: what it is (the manifest's path made printable: a
+// newline in it cannot end the comment), and the two paths as shell variables, each quoted as one
+// word — the commands below only ever expand them inside double quotes, so nothing in a path is
+// run (a directory named inj'$(touch PWNED)' is a name).
+std::string launcher_preamble(const std::string& what, const std::string& command,
+                              const std::string& manifest_path) {
+  return "# " + what + "\n# Then: unidyn sweep gather " + printable(manifest_path) +
+         "\nset -euo pipefail\nexport UNIDYN=" + shell_quoted(command) +
+         "\nexport MANIFEST=" + shell_quoted(manifest_path) + "\n";
+}
+
+}  // namespace
+
 std::string slurm_script(const std::string& command, const std::string& manifest_path,
                          std::size_t runs, std::size_t chunk) {
   const std::size_t tasks = (runs + chunk - 1) / chunk;
   return fmt::format(
       "#!/bin/bash\n"
-      "# A Slurm job array of the sweep {manifest}: {runs} runs in {tasks} tasks of up to "
-      "{chunk}.\n"
-      "# Submit with `sbatch` from a directory every node sees; a task run again (requeued, or by\n"
-      "# hand) skips the runs it finds done. Then: unidyn sweep gather {manifest}\n"
       "#SBATCH --job-name=unidyn-sweep\n"
       "#SBATCH --array=0-{last}\n"
       "#SBATCH --ntasks=1\n"
-      "#SBATCH --cpus-per-task=1\n"
-      "set -euo pipefail\n"
-      "'{command}' sweep run '{manifest}' --chunk {chunk} --task \"$SLURM_ARRAY_TASK_ID\"\n",
-      fmt::arg("manifest", manifest_path), fmt::arg("runs", runs), fmt::arg("tasks", tasks),
-      fmt::arg("chunk", chunk), fmt::arg("last", tasks == 0 ? 0 : tasks - 1),
-      fmt::arg("command", command));
+      "#SBATCH --cpus-per-task=1\n",
+      fmt::arg("last", tasks == 0 ? 0 : tasks - 1)) +
+         launcher_preamble(
+             fmt::format("A Slurm job array of the sweep: {} runs in {} tasks of up to {}. Submit "
+                         "with `sbatch` from a directory every node sees; a task run again "
+                         "(requeued, or by hand) skips the runs it finds done.",
+                         runs, tasks, chunk),
+             command, manifest_path) +
+         fmt::format(
+             "\"$UNIDYN\" sweep run \"$MANIFEST\" --chunk {} --task \"$SLURM_ARRAY_TASK_ID\"\n",
+             chunk);
 }
 
 std::string parallel_script(const std::string& command, const std::string& manifest_path,
                             std::size_t runs, std::size_t chunk) {
   const std::size_t tasks = (runs + chunk - 1) / chunk;
-  return fmt::format(
-      "#!/bin/bash\n"
-      "# The sweep {manifest} by GNU parallel: {runs} runs in {tasks} tasks of up to {chunk}, one\n"
-      "# per core; run it again to finish what an interrupted one left.\n"
-      "# Then: unidyn sweep gather {manifest}\n"
-      "set -euo pipefail\n"
-      "seq 0 {last} | parallel --halt now,fail=1 '{command}' sweep run '{manifest}' --chunk "
-      "{chunk} "
-      "--task {{}}\n",
-      fmt::arg("manifest", manifest_path), fmt::arg("runs", runs), fmt::arg("tasks", tasks),
-      fmt::arg("chunk", chunk), fmt::arg("last", tasks == 0 ? 0 : tasks - 1),
-      fmt::arg("command", command));
+  // GNU parallel runs its command through a shell: the variables are expanded there, inside
+  // double quotes, never spliced into its text
+  return "#!/bin/bash\n" +
+         launcher_preamble(fmt::format("The sweep by GNU parallel: {} runs in {} tasks of up to "
+                                       "{}, one per core; run it again to finish what an "
+                                       "interrupted one left.",
+                                       runs, tasks, chunk),
+                           command, manifest_path) +
+         fmt::format(
+             "seq 0 {} | parallel --halt now,fail=1 '\"$UNIDYN\" sweep run \"$MANIFEST\" --chunk "
+             "{} --task {{}}'\n",
+             tasks == 0 ? 0 : tasks - 1, chunk);
 }
 
 }  // namespace unidyn

@@ -72,5 +72,40 @@ TEST(Sweep, BadInputIsRefused) {
   std::remove(manifest.c_str());
 }
 
+// A manifest in a directory whose name holds quotes, $(), backticks, spaces and a newline: the
+// launchers run the sweep there and run nothing the name says (it used to run `touch PWNED`).
+TEST(Sweep, LaunchersRunNothingAPathSays) {
+  const fs::path base = fs::path(temp_path("hostile-sweep"));
+  fs::remove_all(base);
+  const fs::path dir = base / "inj'$(touch PWNED)'`touch TICKED` a\nb";
+  fs::create_directories(dir);
+  const std::string manifest = (dir / "hoop.sweep.yaml").string();
+  const std::string here = "cd " + shell_quoted(base.string()) + " && ";
+  ASSERT_EQ(
+      run("sweep plan rotating-hoop --grid Omega=1:2:2 --t-end 0.1 -o " + shell_quoted(manifest))
+          .status,
+      0);
+  const std::string slurm = (base / "job.sh").string(), parallel = (base / "par.sh").string();
+  ASSERT_EQ(run("sweep emit " + shell_quoted(manifest) + " --slurm --chunk 1 -o " +
+                shell_quoted(slurm))
+                .status,
+            0);
+  ASSERT_EQ(run("sweep emit " + shell_quoted(manifest) + " --parallel --chunk 1 -o " +
+                shell_quoted(parallel))
+                .status,
+            0);
+  EXPECT_EQ(std::system((here + "SLURM_ARRAY_TASK_ID=0 bash job.sh >/dev/null 2>&1").c_str()), 0);
+  if (std::system("command -v parallel >/dev/null 2>&1") == 0) {
+    EXPECT_EQ(std::system((here + "bash par.sh >/dev/null 2>&1").c_str()), 0);
+    EXPECT_EQ(run("sweep gather " + shell_quoted(manifest)).status, 0);
+  }
+  for (const char* planted : {"PWNED", "TICKED"}) {
+    EXPECT_FALSE(fs::exists(base / planted)) << planted;
+    EXPECT_FALSE(fs::exists(dir / planted)) << planted;
+    EXPECT_FALSE(fs::exists(fs::current_path() / planted)) << planted;
+  }
+  fs::remove_all(base);
+}
+
 }  // namespace
 }  // namespace unidyn::cli_test

@@ -185,7 +185,9 @@ TEST(SweepRun, TasksCoverTheRunsOnce) {
   EXPECT_THROW(task_rows(23, 0, 0), std::invalid_argument);
   const std::string slurm = slurm_script("/bin/unidyn", "/m.sweep.yaml", 23, 5);
   EXPECT_NE(slurm.find("#SBATCH --array=0-4\n"), std::string::npos);
-  EXPECT_NE(slurm.find("'/bin/unidyn' sweep run '/m.sweep.yaml' --chunk 5 --task "
+  EXPECT_NE(slurm.find("export UNIDYN='/bin/unidyn'\nexport MANIFEST='/m.sweep.yaml'\n"),
+            std::string::npos);
+  EXPECT_NE(slurm.find("\"$UNIDYN\" sweep run \"$MANIFEST\" --chunk 5 --task "
                        "\"$SLURM_ARRAY_TASK_ID\""),
             std::string::npos);
   EXPECT_NE(parallel_script("/bin/unidyn", "/m.sweep.yaml", 23, 5).find("seq 0 4 | parallel"),
