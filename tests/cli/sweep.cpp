@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "cli/cli_support.hpp"
+#include "unidyn/numeric/shell_quoting.hpp"
 
 namespace unidyn::cli_test {
 namespace {
