@@ -246,28 +246,41 @@ int run_check(const ModelCommands& c, const CommandModel& model) {
   return agree && state_ok ? 0 : 1;
 }
 
-// SIGINT (Ctrl-C) while a simulation runs: noted, so that the run ends at the next row with its
-// rows and summary; a second one ends the process at once. Not caught when it was ignored (a
-// background job, nohup).
+// SIGINT (Ctrl-C), SIGTERM (kill, a batch system's time limit) or SIGHUP (the terminal closed)
+// while a simulation runs: noted, so that the run ends after the row being written with its rows
+// whole and its summary; a second one ends the process at once. A signal that was ignored (a
+// background job, nohup) is left ignored.
 volatile std::sig_atomic_t g_interrupted = 0;
-extern "C" void on_interrupt(int) {
-  g_interrupted = 1;
-  std::signal(SIGINT, SIG_DFL);
+constexpr int kWatchedSignals[] = {SIGINT, SIGTERM, SIGHUP};
+extern "C" void on_interrupt(int signal) {
+  g_interrupted = signal;
+  std::signal(signal, SIG_DFL);
 }
 class InterruptWatch {
  public:
   InterruptWatch() {
     g_interrupted = 0;
-    previous_ = std::signal(SIGINT, on_interrupt);
-    if (previous_ == SIG_IGN) std::signal(SIGINT, SIG_IGN);
+    for (std::size_t k = 0; k < std::size(kWatchedSignals); ++k) {
+      previous_[k] = std::signal(kWatchedSignals[k], on_interrupt);
+      if (previous_[k] == SIG_IGN) std::signal(kWatchedSignals[k], SIG_IGN);
+    }
   }
-  ~InterruptWatch() { std::signal(SIGINT, previous_ == SIG_IGN ? SIG_IGN : SIG_DFL); }
+  ~InterruptWatch() {
+    for (std::size_t k = 0; k < std::size(kWatchedSignals); ++k) {
+      std::signal(kWatchedSignals[k], previous_[k] == SIG_IGN ? SIG_IGN : SIG_DFL);
+    }
+  }
   InterruptWatch(const InterruptWatch&) = delete;
   InterruptWatch& operator=(const InterruptWatch&) = delete;
   bool requested() const { return g_interrupted != 0; }
+  // 128 + the signal, as a shell reports a command it ended
+  int exit_status() const { return 128 + g_interrupted; }
+  const char* signal_name() const {
+    return g_interrupted == SIGINT ? "SIGINT, Ctrl-C" : g_interrupted == SIGTERM ? "SIGTERM" : "SIGHUP";
+  }
 
  private:
-  void (*previous_)(int) = SIG_DFL;
+  void (*previous_[std::size(kWatchedSignals)])(int) = {SIG_DFL, SIG_DFL, SIG_DFL};
 };
 
 int run_simulate(const ModelCommands& c, const CommandModel& model) {
@@ -310,7 +323,7 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
   const SimulationSummary s =
       simulate(system, compiled, start, watched, [&](const std::vector<double>& row) {
         if (interrupt.requested()) {
-          throw std::runtime_error("interrupted (Ctrl-C)");
+          throw std::runtime_error(std::string("interrupted (") + interrupt.signal_name() + ")");
         }
         if (!poses) return csv->row(row);
         with_poses = row;
@@ -338,7 +351,7 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
       s.event_rows > 0 ? fmt::format(" ({} at events between output times)", s.event_rows) : "",
       path == "-" ? "" : " written to " + printable(path));
   if (interrupt.requested()) {
-    fmt::print(out, "  interrupted at t = {:.10g}\n", s.failure_time);
+    fmt::print(out, "  interrupted at t = {:.10g} ({})\n", s.failure_time, interrupt.signal_name());
   } else if (!s.ok) {
     fmt::print(out, "  stopped at t = {:.10g}: {}\n", s.failure_time, printable(s.message));
   }
@@ -362,7 +375,7 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
     if (&phase == &s.phases.front()) fmt::print(out, "  phases and events:\n");
     fmt::print(out, "    t = {:.12g}: {}\n", phase.t, printable(phase.what));
   }
-  if (interrupt.requested()) return 130;  // as a shell reports a command ended by SIGINT
+  if (interrupt.requested()) return interrupt.exit_status();
   return s.ok && close_error.empty() ? 0 : 1;
 }
 
