@@ -19,7 +19,7 @@ namespace {
 
 using namespace cli_test;
 
-// `unidyn ARGS...` with its standard output to `summary`, SIGINT at its default and not blocked
+// `unidyn ARGS...` with its standard output to `summary`, SIGINT, SIGTERM and SIGHUP at their default and not blocked
 // in the child, whatever the test inherited (a shell's background job ignores it, and unidyn
 // leaves an ignored SIGINT alone). Its pid, or -1.
 pid_t spawn_unidyn(std::vector<std::string> words, const std::string& summary) {
@@ -36,6 +36,8 @@ pid_t spawn_unidyn(std::vector<std::string> words, const std::string& summary) {
   sigset_t interrupt;
   sigemptyset(&interrupt);
   sigaddset(&interrupt, SIGINT);
+  sigaddset(&interrupt, SIGTERM);
+  sigaddset(&interrupt, SIGHUP);
   posix_spawnattr_setsigdefault(&attributes, &interrupt);
   sigset_t none;
   sigemptyset(&none);
@@ -106,6 +108,30 @@ TEST(Interrupt, CtrlCBetweenRowsEndsTheRunAtOnce) {
   const std::string out = read_file(summary);
   EXPECT_TRUE(contains(out, "INTERRUPTED")) << out;
   EXPECT_TRUE(contains(out, "1 rows written")) << out;
+  std::remove(csv.c_str());
+  std::remove(summary.c_str());
+}
+
+// SIGTERM (a batch system's time limit) as Ctrl-C: the rows whole, the summary naming it, exit
+// 143 (it used to kill the process, a torn last row in 3 of 20 trials).
+TEST(Interrupt, SigtermKeepsWholeRowsAndTheSummary) {
+  const std::string csv = temp_path("terminated.csv"), summary = temp_path("terminated.txt");
+  ASSERT_EQ(run("simulate kepler --t-end 1 -o /dev/null").status, 0);  // cached native code
+  const pid_t pid = spawn_unidyn({"simulate", "kepler", "--t-end", "1e5", "-o", csv}, summary);
+  ASSERT_GT(pid, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));
+  ASSERT_EQ(::kill(pid, SIGTERM), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by the signal, not by the handler";
+  EXPECT_EQ(WEXITSTATUS(status), 143);
+  const std::string out = read_file(summary);
+  EXPECT_TRUE(contains(out, "(SIGTERM)")) << out;
+  const std::string text = read_file(csv);
+  ASSERT_FALSE(text.empty());
+  EXPECT_EQ(text.back(), '\n');
+  const Csv rows = parse_csv(text);
+  EXPECT_TRUE(contains(out, std::to_string(rows.rows.size()) + " rows written")) << out;
   std::remove(csv.c_str());
   std::remove(summary.c_str());
 }
