@@ -9,6 +9,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <thread>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -205,17 +206,28 @@ EntryLock::EntryLock(const fs::path& directory, const std::string& name, bool ex
     fd_ = -1;
     throw std::runtime_error(path.string() + ": " + why);
   }
-  const int operation = exclusive ? LOCK_EX : LOCK_SH;
-  if (::flock(fd_, operation | LOCK_NB) == 0) return;
+  // polled, with a bound: another unidyn compiling the same model lets go within a minute or
+  // two, one that is stopped (Ctrl-Z, SIGSTOP) never does
+  const int operation = (exclusive ? LOCK_EX : LOCK_SH) | LOCK_NB;
   const auto start = std::chrono::steady_clock::now();
   while (::flock(fd_, operation) != 0) {
-    if (errno == EINTR) continue;
-    const std::string message = system_error("cannot lock " + path.string());
-    ::close(fd_);
-    fd_ = -1;
-    throw std::runtime_error(message);
+    waited_seconds_ =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::string message;
+    if (errno != EWOULDBLOCK && errno != EINTR) {
+      message = system_error("cannot lock " + path.string());
+    } else if (waited_seconds_ > kLockWaitSeconds) {
+      message = "another unidyn has held " + path.string() + " for " +
+                std::to_string(static_cast<int>(kLockWaitSeconds)) +
+                " s (compiling this model, or stopped): not waiting longer";
+    }
+    if (!message.empty()) {
+      ::close(fd_);
+      fd_ = -1;
+      throw std::runtime_error(message);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-  waited_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 EntryLock::~EntryLock() {

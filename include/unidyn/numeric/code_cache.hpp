@@ -48,7 +48,9 @@ class CacheLocation {
 };
 
 // A flock on <directory>/<name>.lock: exclusive while an entry is made or removed, shared while
-// one is checked and loaded. Released when this object dies.
+// one is checked and loaded. Released when this object dies. Waited for at most
+// kLockWaitSeconds (then std::runtime_error: the caller goes on without native code).
+inline constexpr double kLockWaitSeconds = 120.0;
 class EntryLock {
  public:
   EntryLock(const std::filesystem::path& directory, const std::string& name, bool exclusive);
