@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <chrono>
 #include <thread>
 #include <cstdlib>
@@ -302,8 +303,30 @@ void store_entry(const fs::path& directory, const std::string& name,
   sync_directory(directory);
 }
 
+namespace {
+
+// Removes <parent>/<prefix>-<pid>-XXXXXX of every process that no longer exists: what a run
+// killed while compiling left (SIGKILL, a power cut).
+void remove_abandoned_build_directories(const fs::path& parent, const std::string& prefix) {
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(parent, error)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with(prefix + "-") || !entry.is_directory(error)) continue;
+    const std::string rest = name.substr(prefix.size() + 1);
+    const std::size_t dash = rest.find('-');
+    if (dash == std::string::npos || dash == 0 || dash > 9) continue;
+    if (rest.find_first_not_of("0123456789") != dash) continue;
+    const auto pid = static_cast<pid_t>(std::stol(rest.substr(0, dash)));
+    if (::kill(pid, 0) != 0 && errno == ESRCH) fs::remove_all(entry.path(), error);
+  }
+}
+
+}  // namespace
+
 BuildDirectory::BuildDirectory(const fs::path& parent, const std::string& prefix) {
-  std::string pattern = (parent / (prefix + "-XXXXXX")).string();
+  remove_abandoned_build_directories(parent, prefix);
+  std::string pattern =
+      (parent / (prefix + "-" + std::to_string(::getpid()) + "-XXXXXX")).string();
   if (::mkdtemp(pattern.data()) == nullptr) {
     throw std::runtime_error(system_error("cannot create a build directory in " + parent.string()));
   }

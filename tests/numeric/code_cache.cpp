@@ -232,5 +232,23 @@ TEST(CodeCache, OneProcessMakesAnEntryAtATime) {
   EXPECT_EQ(mode_of(cache / "e.lock"), 0600u);
 }
 
+// A build directory left by a process that no longer exists (killed while compiling) is removed
+// by the next compilation; one of a live process, and anything else, is left alone.
+TEST(CodeCache, AbandonedBuildDirectoriesAreRemoved) {
+  const fs::path cache = fresh_directory("abandoned");
+  // a pid no process has: past the kernel's pid_max (at most 2^22)
+  fs::create_directories(cache / "build-99999999-AbCdEf");
+  fs::create_directories(cache / ("build-" + std::to_string(::getppid()) + "-Living"));
+  fs::create_directories(cache / "build-notapid-Xyz");
+  {
+    const BuildDirectory build(cache);
+    EXPECT_TRUE(build.path().filename().string().starts_with(
+        "build-" + std::to_string(::getpid()) + "-"));
+  }
+  EXPECT_FALSE(fs::exists(cache / "build-99999999-AbCdEf"));
+  EXPECT_TRUE(fs::exists(cache / ("build-" + std::to_string(::getppid()) + "-Living")));
+  EXPECT_TRUE(fs::exists(cache / "build-notapid-Xyz"));
+}
+
 }  // namespace
 }  // namespace unidyn

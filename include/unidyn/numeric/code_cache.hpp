@@ -87,8 +87,9 @@ void remove_entry(const std::filesystem::path& directory, const std::string& nam
 void store_entry(const std::filesystem::path& directory, const std::string& name,
                  const std::filesystem::path& compiled_library);
 
-// A private directory for one compilation: mkdtemp(<parent>/build-XXXXXX), mode 0700, removed
-// with everything in it when this object dies.
+// A private directory for one compilation: mkdtemp(<parent>/build-<pid>-XXXXXX), mode 0700,
+// removed with everything in it when this object dies. Those of processes that no longer exist
+// (killed while compiling) are removed first.
 class BuildDirectory {
  public:
   explicit BuildDirectory(const std::filesystem::path& parent, const std::string& prefix = "build");
