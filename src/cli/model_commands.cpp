@@ -3,6 +3,7 @@
 
 #include "command_model.hpp"
 #include "report_command.hpp"
+#include "signals.hpp"
 #include "simulation_setup.hpp"
 
 #include <fmt/format.h>
@@ -245,43 +246,6 @@ int run_check(const ModelCommands& c, const CommandModel& model) {
   fmt::print("{}\n", agree && state_ok ? "check passed" : "check FAILED");
   return agree && state_ok ? 0 : 1;
 }
-
-// SIGINT (Ctrl-C), SIGTERM (kill, a batch system's time limit) or SIGHUP (the terminal closed)
-// while a simulation runs: noted, so that the run ends after the row being written with its rows
-// whole and its summary; a second one ends the process at once. A signal that was ignored (a
-// background job, nohup) is left ignored.
-volatile std::sig_atomic_t g_interrupted = 0;
-constexpr int kWatchedSignals[] = {SIGINT, SIGTERM, SIGHUP};
-extern "C" void on_interrupt(int signal) {
-  g_interrupted = signal;
-  std::signal(signal, SIG_DFL);
-}
-class InterruptWatch {
- public:
-  InterruptWatch() {
-    g_interrupted = 0;
-    for (std::size_t k = 0; k < std::size(kWatchedSignals); ++k) {
-      previous_[k] = std::signal(kWatchedSignals[k], on_interrupt);
-      if (previous_[k] == SIG_IGN) std::signal(kWatchedSignals[k], SIG_IGN);
-    }
-  }
-  ~InterruptWatch() {
-    for (std::size_t k = 0; k < std::size(kWatchedSignals); ++k) {
-      std::signal(kWatchedSignals[k], previous_[k] == SIG_IGN ? SIG_IGN : SIG_DFL);
-    }
-  }
-  InterruptWatch(const InterruptWatch&) = delete;
-  InterruptWatch& operator=(const InterruptWatch&) = delete;
-  bool requested() const { return g_interrupted != 0; }
-  // 128 + the signal, as a shell reports a command it ended
-  int exit_status() const { return 128 + g_interrupted; }
-  const char* signal_name() const {
-    return g_interrupted == SIGINT ? "SIGINT, Ctrl-C" : g_interrupted == SIGTERM ? "SIGTERM" : "SIGHUP";
-  }
-
- private:
-  void (*previous_[std::size(kWatchedSignals)])(int) = {SIG_DFL, SIG_DFL, SIG_DFL};
-};
 
 int run_simulate(const ModelCommands& c, const CommandModel& model) {
   const System system = command_system(c, model.system);

@@ -8,12 +8,13 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <csignal>
 #include <chrono>
-#include <thread>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+#include <thread>
 
 #include "unidyn/numeric/digest.hpp"
 
@@ -192,7 +193,8 @@ CacheLocation::~CacheLocation() {
   fs::remove_all(directory_, error);
 }
 
-EntryLock::EntryLock(const fs::path& directory, const std::string& name, bool exclusive) {
+EntryLock::EntryLock(const fs::path& directory, const std::string& name, bool exclusive,
+                     double wait_seconds) {
   const fs::path path = directory / (name + ".lock");
   fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
   if (fd_ < 0) throw std::runtime_error(system_error("cannot open " + path.string()));
@@ -217,9 +219,10 @@ EntryLock::EntryLock(const fs::path& directory, const std::string& name, bool ex
     std::string message;
     if (errno != EWOULDBLOCK && errno != EINTR) {
       message = system_error("cannot lock " + path.string());
-    } else if (waited_seconds_ > kLockWaitSeconds) {
-      message = "another unidyn has held " + path.string() + " for " +
-                std::to_string(static_cast<int>(kLockWaitSeconds)) +
+    } else if (waited_seconds_ > wait_seconds) {
+      char seconds[32];
+      std::snprintf(seconds, sizeof seconds, "%g", wait_seconds);
+      message = "another unidyn has held " + path.string() + " for " + seconds +
                 " s (compiling this model, or stopped): not waiting longer";
     }
     if (!message.empty()) {
@@ -325,8 +328,7 @@ void remove_abandoned_build_directories(const fs::path& parent, const std::strin
 
 BuildDirectory::BuildDirectory(const fs::path& parent, const std::string& prefix) {
   remove_abandoned_build_directories(parent, prefix);
-  std::string pattern =
-      (parent / (prefix + "-" + std::to_string(::getpid()) + "-XXXXXX")).string();
+  std::string pattern = (parent / (prefix + "-" + std::to_string(::getpid()) + "-XXXXXX")).string();
   if (::mkdtemp(pattern.data()) == nullptr) {
     throw std::runtime_error(system_error("cannot create a build directory in " + parent.string()));
   }

@@ -167,9 +167,14 @@ fs::path result_path(const fs::path& directory, std::size_t index) {
 ChunkReport run_sweep_rows(const SweepManifest& m, const std::string& manifest_sha256,
                            std::size_t first, std::size_t last, const fs::path& directory,
                            std::ostream& log) {
-  if (first > last || last > m.runs.size()) {
+  if (first > last || last > m.run_count) {
     throw std::invalid_argument(
-        fmt::format("--rows {}:{} is outside the manifest's {} runs", first, last, m.runs.size()));
+        fmt::format("--rows {}:{} is outside the manifest's {} runs", first, last, m.run_count));
+  }
+  // the runs held (those a manifest was read for): run k at k − held_from
+  const std::size_t held_from = m.runs.empty() ? first : m.runs.front().index;
+  if (first < held_from || last - held_from > m.runs.size()) {
+    throw std::logic_error("run_sweep_rows: the manifest was not read for these runs");
   }
   // the model as planned, compiled once for the chunk (native code through its cache)
   const std::string text = read_model_text(m.model);
@@ -199,14 +204,14 @@ ChunkReport run_sweep_rows(const SweepManifest& m, const std::string& manifest_s
   for (std::size_t k = first; k < last; ++k) {
     const fs::path path = result_path(directory, k);
     // a result made for this run of this manifest is kept; anything else there is made again
-    if (valid_result(path, manifest_sha256, m.runs[k])) {
+    const SweepRun& run = m.runs[k - held_from];
+    if (valid_result(path, manifest_sha256, run)) {
       ++report.skipped;
       continue;
     }
     const bool stale = fs::exists(path);
-    const RunRow row =
-        run_one(m, m.runs[k], system, compiled, columns.size(), modes ? &*modes : nullptr);
-    write_atomically(path, header + row.text + result_stamp(manifest_sha256, m.runs[k]));
+    const RunRow row = run_one(m, run, system, compiled, columns.size(), modes ? &*modes : nullptr);
+    write_atomically(path, header + row.text + result_stamp(manifest_sha256, run));
     ++report.done;
     if (stale) {
       ++report.remade;
@@ -253,10 +258,10 @@ std::pair<std::size_t, std::size_t> task_rows(std::size_t runs, std::size_t chun
 
 namespace {
 
-// The lines every launcher has after its #! and #SBATCH lines: what it is (the manifest's path made printable: a
-// newline in it cannot end the comment), and the two paths as shell variables, each quoted as one
-// word — the commands below only ever expand them inside double quotes, so nothing in a path is
-// run (a directory named inj'$(touch PWNED)' is a name).
+// The lines every launcher has after its #! and #SBATCH lines: what it is (the manifest's path made
+// printable: a newline in it cannot end the comment), and the two paths as shell variables, each
+// quoted as one word — the commands below only ever expand them inside double quotes, so nothing in
+// a path is run (a directory named inj'$(touch PWNED)' is a name).
 std::string launcher_preamble(const std::string& what, const std::string& command,
                               const std::string& manifest_path) {
   return "# " + what + "\n# Then: unidyn sweep gather " + printable(manifest_path) +
@@ -270,12 +275,12 @@ std::string slurm_script(const std::string& command, const std::string& manifest
                          std::size_t runs, std::size_t chunk) {
   const std::size_t tasks = (runs + chunk - 1) / chunk;
   return fmt::format(
-      "#!/bin/bash\n"
-      "#SBATCH --job-name=unidyn-sweep\n"
-      "#SBATCH --array=0-{last}\n"
-      "#SBATCH --ntasks=1\n"
-      "#SBATCH --cpus-per-task=1\n",
-      fmt::arg("last", tasks == 0 ? 0 : tasks - 1)) +
+             "#!/bin/bash\n"
+             "#SBATCH --job-name=unidyn-sweep\n"
+             "#SBATCH --array=0-{last}\n"
+             "#SBATCH --ntasks=1\n"
+             "#SBATCH --cpus-per-task=1\n",
+             fmt::arg("last", tasks == 0 ? 0 : tasks - 1)) +
          launcher_preamble(
              fmt::format("A Slurm job array of the sweep: {} runs in {} tasks of up to {}. Submit "
                          "with `sbatch` from a directory every node sees; a task run again "

@@ -53,7 +53,8 @@ class CacheLocation {
 inline constexpr double kLockWaitSeconds = 120.0;
 class EntryLock {
  public:
-  EntryLock(const std::filesystem::path& directory, const std::string& name, bool exclusive);
+  EntryLock(const std::filesystem::path& directory, const std::string& name, bool exclusive,
+            double wait_seconds = kLockWaitSeconds);
   ~EntryLock();
   EntryLock(const EntryLock&) = delete;
   EntryLock& operator=(const EntryLock&) = delete;
