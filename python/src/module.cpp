@@ -6,6 +6,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
+
 #include "python_model.hpp"
 #include "unidyn/integrate/simulation.hpp"
 #include "unidyn/rotation/errors.hpp"
@@ -127,12 +129,25 @@ PYBIND11_MODULE(_unidyn, module) {
           [](const PythonModel& m, std::optional<double> t_end, std::optional<double> output_step,
              std::optional<std::string> method, std::optional<double> rtol, const Settings& set,
              bool poses) {
-            const RunRequest r = request(t_end, output_step, method, rtol, set, poses);
+            RunRequest r = request(t_end, output_step, method, rtol, set, poses);
+            // Ctrl-C: the interpreter's handler only notes it; asked for here, with the lock
+            // taken back at most every 50 ms, it ends the run and raises KeyboardInterrupt
+            bool interrupted = false;
+            auto asked = std::chrono::steady_clock::now();
+            r.interrupted = [&] {
+              const auto now = std::chrono::steady_clock::now();
+              if (interrupted || now - asked < std::chrono::milliseconds(50)) return interrupted;
+              asked = now;
+              py::gil_scoped_acquire held;
+              interrupted = PyErr_CheckSignals() != 0;
+              return interrupted;
+            };
             unidyn::python::RunResult result;
             {
               py::gil_scoped_release unlocked;
               result = m.simulate(r);
             }
+            if (interrupted) throw py::error_already_set();
             const auto columns = static_cast<py::ssize_t>(result.columns.size());
             Array values({static_cast<py::ssize_t>(result.rows), columns});
             std::copy(result.values.begin(), result.values.end(), values.mutable_data());

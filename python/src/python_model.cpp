@@ -103,7 +103,8 @@ RunResult PythonModel::simulate(const RunRequest& request) const {
   const std::lock_guard held(symbolic_lock());
   const System& system = this->system();
   cli::CommandStart initial = cli::command_start(c, system, system);
-  const SimulationOptions options = cli::options_for(system, c);
+  SimulationOptions options = cli::options_for(system, c);
+  options.interrupted = request.interrupted;
   const CompiledSystem& code = compiled_locked();
   const std::vector<std::string> computed =
       cli::complete_command_start(initial, system, system, code);

@@ -16,6 +16,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +45,8 @@ struct RunRequest {
   std::string method;
   std::vector<std::pair<std::string, double>> set;
   bool poses = false;
+  // Asked after every step (SimulationOptions::interrupted): true ends the run there.
+  std::function<bool()> interrupted;
 };
 
 class PythonModel {

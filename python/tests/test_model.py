@@ -171,3 +171,20 @@ def test_threads_share_one_compiled_model():
         t.join()
     for k in range(4):
         assert np.array_equal(runs[k].data, model.simulate(t_end=0.5, set={"m": 1.0 + k}).data)
+
+
+def test_ctrl_c_ends_a_simulation_at_once():
+    """Ctrl-C during simulate raises KeyboardInterrupt within a fraction of a second (it used to take
+    effect only after the whole run: the Kepler problem to t = 1e5 takes about 12 s)."""
+    import os
+    import signal
+
+    model = unidyn.load("kepler")
+    model.simulate(t_end=1.0)  # compiled first
+    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        model.simulate(t_end=1e5, output_step=1e5)
+    timer.join()
+    assert time.monotonic() - start < 2.0

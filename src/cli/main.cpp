@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -14,6 +15,7 @@
 #include "model_commands.hpp"
 #include "rotation_command.hpp"
 #include "sanitizers.hpp"
+#include "signals.hpp"
 #include "sweep_command.hpp"
 #include "unidyn/rotation/errors.hpp"
 #include "unidyn/symbolic/expression.hpp"
@@ -24,6 +26,11 @@
 #endif
 
 int main(int argc, char** argv) {
+  // past a file-size limit (ulimit -f) a write fails with EFBIG, which the writers handle (the
+  // file cut back to its last whole row, exit 1), instead of SIGXFSZ killing the process mid-row
+  std::signal(SIGXFSZ, SIG_IGN);
+  // Ctrl-C, kill or a closed terminal: no compiler left running for a process that is gone
+  unidyn::cli::end_commands_on_signals();
   // the same process layout in every run: equal input, byte-identical output
   unidyn::cli::use_fixed_layout(argv);
   CLI::App app{"unidyn: engineering dynamics after O'Reilly, Intermediate Dynamics for Engineers"};

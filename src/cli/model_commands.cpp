@@ -3,6 +3,7 @@
 
 #include "command_model.hpp"
 #include "report_command.hpp"
+#include "signals.hpp"
 #include "simulation_setup.hpp"
 
 #include <fmt/format.h>
@@ -246,30 +247,6 @@ int run_check(const ModelCommands& c, const CommandModel& model) {
   return agree && state_ok ? 0 : 1;
 }
 
-// SIGINT (Ctrl-C) while a simulation runs: noted, so that the run ends at the next row with its
-// rows and summary; a second one ends the process at once. Not caught when it was ignored (a
-// background job, nohup).
-volatile std::sig_atomic_t g_interrupted = 0;
-extern "C" void on_interrupt(int) {
-  g_interrupted = 1;
-  std::signal(SIGINT, SIG_DFL);
-}
-class InterruptWatch {
- public:
-  InterruptWatch() {
-    g_interrupted = 0;
-    previous_ = std::signal(SIGINT, on_interrupt);
-    if (previous_ == SIG_IGN) std::signal(SIGINT, SIG_IGN);
-  }
-  ~InterruptWatch() { std::signal(SIGINT, previous_ == SIG_IGN ? SIG_IGN : SIG_DFL); }
-  InterruptWatch(const InterruptWatch&) = delete;
-  InterruptWatch& operator=(const InterruptWatch&) = delete;
-  bool requested() const { return g_interrupted != 0; }
-
- private:
-  void (*previous_)(int) = SIG_DFL;
-};
-
 int run_simulate(const ModelCommands& c, const CommandModel& model) {
   const System system = command_system(c, model.system);
   CommandStart initial = command_start(c, model.system, system);
@@ -305,10 +282,12 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
   const auto run_start = std::chrono::steady_clock::now();
   // Ctrl-C ends the run after the row being written, with the rows kept and the summary
   const InterruptWatch interrupt;
+  SimulationOptions watched = options;
+  watched.interrupted = [&] { return interrupt.requested(); };
   const SimulationSummary s =
-      simulate(system, compiled, start, options, [&](const std::vector<double>& row) {
+      simulate(system, compiled, start, watched, [&](const std::vector<double>& row) {
         if (interrupt.requested()) {
-          throw std::runtime_error("interrupted (Ctrl-C)");
+          throw std::runtime_error(std::string("interrupted (") + interrupt.signal_name() + ")");
         }
         if (!poses) return csv->row(row);
         with_poses = row;
@@ -336,7 +315,7 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
       s.event_rows > 0 ? fmt::format(" ({} at events between output times)", s.event_rows) : "",
       path == "-" ? "" : " written to " + printable(path));
   if (interrupt.requested()) {
-    fmt::print(out, "  interrupted at t = {:.10g}\n", s.failure_time);
+    fmt::print(out, "  interrupted at t = {:.10g} ({})\n", s.failure_time, interrupt.signal_name());
   } else if (!s.ok) {
     fmt::print(out, "  stopped at t = {:.10g}: {}\n", s.failure_time, printable(s.message));
   }
@@ -360,7 +339,7 @@ int run_simulate(const ModelCommands& c, const CommandModel& model) {
     if (&phase == &s.phases.front()) fmt::print(out, "  phases and events:\n");
     fmt::print(out, "    t = {:.12g}: {}\n", phase.t, printable(phase.what));
   }
-  if (interrupt.requested()) return 130;  // as a shell reports a command ended by SIGINT
+  if (interrupt.requested()) return interrupt.exit_status();
   return s.ok && close_error.empty() ? 0 : 1;
 }
 

@@ -15,6 +15,7 @@
 #include "unidyn/analysis/time_dependence.hpp"
 #include "unidyn/equations/equivalence.hpp"
 #include "unidyn/equations/newton.hpp"
+#include "unidyn/io/atomic_file.hpp"
 #include "unidyn/numeric/constraint_forces.hpp"
 #include "unidyn/numeric/poses.hpp"
 #include "unidyn/report/report_page.hpp"
@@ -143,8 +144,12 @@ int run_report(const ModelCommands& c, const CommandModel& model, std::ostream& 
   const SimulationOptions options = options_for(system, c);
   const std::string path =
       c.output.empty() ? std::filesystem::path(model.path).stem().string() + ".html" : c.output;
-  std::ofstream file(path, std::ios::binary);
-  if (!file) throw std::invalid_argument("cannot write " + printable(path));
+  // checked now, written whole at the end (a Ctrl-C on the way leaves the previous page)
+  try {
+    expect_writable(path);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(printable(e.what()));
+  }
 
   // the run, with every body's and particle's pose
   const CompiledSystem compiled = command_compiled(c, model, system);
@@ -194,9 +199,11 @@ int run_report(const ModelCommands& c, const CommandModel& model, std::ostream& 
   }
   add_operating_point(report, c, system, compiled, start);
   const std::string page = report_page(report, run, *assets);
-  file << page;
-  file.close();
-  if (!file) throw std::runtime_error("cannot write " + printable(path));
+  try {
+    write_atomically(path, page);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(printable(e.what()));
+  }
   out << fmt::format("report of {} written to {} ({:.0f} kB): {} rows{}\n", system.name,
                      printable(path), static_cast<double>(page.size()) / 1024.0, s.rows,
                      s.ok ? "" : ", the run FAILED: " + printable(s.message));

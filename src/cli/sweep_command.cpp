@@ -1,9 +1,12 @@
 // `unidyn sweep`: plan a sweep, run chunks of it, gather the results, write a launcher.
 #include "sweep_command.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <charconv>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -29,14 +32,6 @@ void write_text(const std::string& path, const std::string& text) {
   out << text;
   out.close();
   if (!out) throw std::invalid_argument("cannot write " + printable(path));
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::invalid_argument("cannot read " + printable(path));
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 // --rows A:B (either side may be left out: from the first, to the last run).
@@ -92,17 +87,41 @@ int run_plan(const SweepCommand& c) {
   return 0;
 }
 
+// The SHA-256 of a manifest's bytes, read in blocks (a manifest can be hundreds of MB).
+std::string manifest_sha256(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw std::invalid_argument("cannot read the manifest " + path);
+  try {
+    const std::string digest = sha256_of_descriptor(fd).sha256;
+    ::close(fd);
+    return digest;
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+}
+
 int run_chunk(const SweepCommand& c) {
-  const SweepManifest manifest = read_manifest(c.model);
   if (!c.rows.empty() && c.chunk > 0) throw std::invalid_argument("give --rows or --chunk/--task");
-  const auto [first, last] = c.chunk > 0 ? task_rows(manifest.runs.size(), c.chunk, c.task)
-                             : c.rows.empty()
-                                 ? std::pair<std::size_t, std::size_t>{0, manifest.runs.size()}
-                                 : parse_rows(c.rows, manifest.runs.size());
+  // only the task's runs are read and held; the range is checked against the count read
+  constexpr std::size_t all = SIZE_MAX;
+  const std::size_t task_first = c.chunk > 0 && c.task <= all / c.chunk ? c.task * c.chunk : all;
+  const auto [wanted_first, wanted_last] =
+      c.chunk > 0      ? std::pair{task_first, task_first + std::min(c.chunk, all - task_first)}
+      : c.rows.empty() ? std::pair<std::size_t, std::size_t>{0, all}
+                       : parse_rows(c.rows, all);
+  const SweepManifest manifest = read_manifest(c.model, {wanted_first, wanted_last});
+  const auto [first, last] =
+      c.chunk > 0 ? task_rows(manifest.run_count, c.chunk, c.task)
+                  : std::pair{wanted_first, wanted_last == all ? manifest.run_count : wanted_last};
   const fs::path directory = results_directory(c);
-  const ChunkReport report = run_sweep_rows(manifest, first, last, directory, std::cout);
-  fmt::print("runs {} to {}: {} made ({} of them failed), {} already done, in {}\n", first, last,
-             report.done, report.failed, report.skipped, printable(directory.string()));
+  const ChunkReport report =
+      run_sweep_rows(manifest, manifest_sha256(c.model), first, last, directory, std::cout);
+  fmt::print(
+      "runs {} to {}: {} made ({} of them failed, {} made again over a stale result), {} "
+      "already done, in {}\n",
+      first, last, report.done, report.failed, report.remade, report.skipped,
+      printable(directory.string()));
   return 0;
 }
 
@@ -110,27 +129,36 @@ int run_gather(const SweepCommand& c) {
   const SweepManifest manifest = read_manifest(c.model);
   const fs::path directory = results_directory(c);
   std::ostringstream table;
-  const std::vector<std::size_t> missing =
-      gather_sweep(manifest, sha256_hex(read_text(c.model)), directory, table);
+  const GatherReport report = gather_sweep(manifest, manifest_sha256(c.model), directory, table);
+  // at most ten run numbers, then "..."
+  const auto some = [](const std::vector<std::size_t>& runs) {
+    const std::vector<std::size_t> shown(
+        runs.begin(), runs.begin() + static_cast<long>(std::min<std::size_t>(runs.size(), 10)));
+    return fmt::format("{}{}", fmt::join(shown, ", "), runs.size() > 10 ? ", ..." : "");
+  };
+  if (!report.stale.empty()) {
+    fmt::print(stderr,
+               "{} of {} results are not this manifest's or not whole (a re-plan, a copy, a cut "
+               "file): {}; no table written. `unidyn sweep run` makes them again\n",
+               report.stale.size(), manifest.runs.size(), some(report.stale));
+    return 1;
+  }
   if (c.output.empty()) {
     std::cout << table.str();
   } else {
     write_text(c.output, table.str());
   }
-  if (missing.empty()) {
+  if (report.missing.empty()) {
     fmt::print(stderr, "gathered all {} runs\n", manifest.runs.size());
     return 0;
   }
-  std::vector<std::size_t> shown(
-      missing.begin(),
-      missing.begin() + static_cast<long>(std::min<std::size_t>(missing.size(), 10)));
-  fmt::print(stderr, "{} of {} runs have no result yet: {}{}\n", missing.size(),
-             manifest.runs.size(), fmt::join(shown, ", "), missing.size() > 10 ? ", ..." : "");
+  fmt::print(stderr, "{} of {} runs have no result yet: {}\n", report.missing.size(),
+             manifest.runs.size(), some(report.missing));
   return 1;
 }
 
 int run_emit(const SweepCommand& c) {
-  const SweepManifest manifest = read_manifest(c.model);
+  const SweepManifest manifest = read_manifest(c.model, {0, 0});  // the count alone
   if (c.slurm == c.parallel) throw std::invalid_argument("sweep emit: give --slurm or --parallel");
   const std::size_t chunk = c.chunk > 0 ? c.chunk : 10;
   std::error_code error;
@@ -138,8 +166,8 @@ int run_emit(const SweepCommand& c) {
   const std::string command = error ? std::string("unidyn") : self.string();
   const std::string manifest_path = fs::absolute(c.model).lexically_normal().string();
   const std::string script =
-      c.slurm ? slurm_script(command, manifest_path, manifest.runs.size(), chunk)
-              : parallel_script(command, manifest_path, manifest.runs.size(), chunk);
+      c.slurm ? slurm_script(command, manifest_path, manifest.run_count, chunk)
+              : parallel_script(command, manifest_path, manifest.run_count, chunk);
   if (c.output.empty()) {
     std::cout << script;
   } else {
@@ -160,14 +188,18 @@ void add_sweep_command(CLI::App& app, SweepCommand& c) {
   c.plan->add_option("--grid", c.grid, "NAME=FROM:TO:COUNT: a parameter, q or der(q) on a grid");
   c.plan->add_option("--random", c.random, "NAME=U(A,B) or NAME=N(MEAN,SD): drawn per run");
   c.plan->add_option("--samples", c.samples, "random draws per grid point")->capture_default_str();
-  c.plan->add_option("--seed", c.seed, "the draws' seed")->capture_default_str();
+  // checked as text, before the conversion that would take -1 for 2^64 - 1
+  c.plan->add_option("--seed", c.seed, "the draws' seed")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   c.plan->add_option("--modes-at", c.modes_at,
                      "NAME=VALUE of an operating point (as `unidyn modes --at`): each run also "
                      "gives the stability and eigenvalues there with its parameters");
-  c.plan->add_option("--t-end", c.t_end, "end time of every run");
-  c.plan->add_option("--output-step", c.output_step, "time between rows");
+  c.plan->add_option("--t-end", c.t_end, "end time of every run")->check(CLI::PositiveNumber);
+  c.plan->add_option("--output-step", c.output_step, "time between rows")
+      ->check(CLI::PositiveNumber);
   c.plan->add_option("--method", c.method, integration_method_choices());
-  c.plan->add_option("--rtol", c.rtol, "relative tolerance");
+  c.plan->add_option("--rtol", c.rtol, "relative tolerance")->check(CLI::PositiveNumber);
   c.plan->add_option("-o,--output", c.output, "the manifest (default MODEL.sweep.yaml)");
 
   c.run = c.sweep->add_subcommand("run", "Run a chunk of a manifest's runs (done ones skipped)");

@@ -185,14 +185,17 @@ void CvodeBdf::advance(double t_limit) {
   const long rejected = error_failures + convergence_failures;
   stats.rejected_steps += static_cast<std::size_t>(rejected - s.rejected_base);
   s.rejected_base = rejected;
-  // The step's polynomial as Taylor coefficients at its end (exact: it has degree q).
+  // The step's polynomial as Taylor coefficients at its end (exact: it has degree q), q the order
+  // of the step just taken — not CVodeGetCurrentOrder, the order of the next one: when that is
+  // q + 1, CVodeGetDky refuses k = q + 1 and the last coefficient was a stale one (rows inside such
+  // a step off by 1e-5 at rtol 1e-8).
   int order = 0;
-  CVodeGetCurrentOrder(s.memory, &order);
+  CVodeGetLastOrder(s.memory, &order);
   CVodeGetLastStep(s.memory, &last_step_);
   last_order_ = order;
   taylor_.resize(static_cast<std::size_t>(order) + 1);
   for (int k = 0; k <= order; ++k) {
-    CVodeGetDky(s.memory, t_new, k, s.dky);
+    if (const int got = CVodeGetDky(s.memory, t_new, k, s.dky); got != CV_SUCCESS) fail(got, t_new);
     taylor_[static_cast<std::size_t>(k)] = view(s.dky);
   }
   // a step that does not move t (t + h = t): the step size is below t's round-off, and no

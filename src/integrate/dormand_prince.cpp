@@ -54,6 +54,14 @@ double DormandPrince54::error_norm(double h) {
   return std::sqrt((error_.array() / error_scale(y_new_)).square().mean());
 }
 
+// h ‖k7 − k6‖ / ‖y1 − ŷ‖: stages 6 and 7 are f at the step's end, at ŷ (stage 6's argument)
+// and at y1 (Hairer's DOPRI5).
+double DormandPrince54::stiffness_estimate(double h) const {
+  const double apart = (y_new_ - stage_).squaredNorm();
+  if (!(apart > 0.0)) return -1.0;
+  return std::abs(h) * std::sqrt((k_[6] - k_[5]).squaredNorm() / apart);
+}
+
 void DormandPrince54::commit(double h, double t_new) {
   const auto& k = k_;
   const Eigen::VectorXd& f0 = first_stage();

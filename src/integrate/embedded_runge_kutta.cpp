@@ -155,12 +155,38 @@ void EmbeddedRungeKutta::take_adaptive_step(double t_limit) {
       if (rejected) h_next = std::min(h_next, std::abs(h));
       error_previous_ = std::max(error, 1e-4);
       h_ = std::min(h_next, options_.max_step);
+      watch_stiffness(h);
       commit(h, t_new);
       return;
     }
     h_ = std::abs(h) / std::min(1.0 / options_.min_factor, factor_i / options_.safety);
     rejected = true;
     ++stats.rejected_steps;
+  }
+}
+
+// (HNW II, §IV.2, as Hairer's DOPRI5 does) Every 1000th accepted step, and at every step once
+// one was found stiff: h|λ| ≈ h ‖f(t1, y1) − f(t1, ŷ)‖ / ‖y1 − ŷ‖ from two stages at the step's
+// end. Past the stability bound 15 times (six steps below it in a row start the count again),
+// the steps are held by the method's stability, not by its accuracy: an implicit method takes the
+// model in a fraction of the steps, and this one would creep to max_steps.
+void EmbeddedRungeKutta::watch_stiffness(double h) {
+  const std::size_t accepted = stats().accepted_steps + 1;
+  if (stiff_steps_ == 0 && accepted % 1000 != 0) return;
+  const double h_lambda = stiffness_estimate(h);
+  if (h_lambda < 0.0) return;
+  if (h_lambda > stability_bound()) {
+    non_stiff_steps_ = 0;
+    if (++stiff_steps_ == 15) {
+      throw IntegrationError(
+          describe("the model is stiff at t = " + to_text(t()) +
+                   ": the steps are held by the method's stability (h|lambda| = " +
+                   to_text(h_lambda) + " at the bound " + to_text(stability_bound()) +
+                   " fifteen times), not its accuracy; --method cvode (BDF) is made for this"),
+          t());
+    }
+  } else if (++non_stiff_steps_ == 6) {
+    stiff_steps_ = 0;
   }
 }
 

@@ -637,6 +637,10 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
       callbacks.on_event = on_event;
     }
     callbacks.post_step = [&](double t, Eigen::VectorXd& y) {
+      // a stiff run may take seconds between rows: a signal is looked at every step
+      if (options.interrupted && options.interrupted()) {
+        throw std::runtime_error("interrupted (a signal)");
+      }
       watch_euler_charts(system, t, y, summary);
       if (project && !inside && !symplectic) projection(t, y);
     };

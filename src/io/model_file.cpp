@@ -82,7 +82,7 @@ System ModelReader::read(const YAML::Node& root) {
 
   System system;
   system.source = file_;
-  system.name = root["name"] ? printable_name(root["name"], "the model's name", false) : file_;
+  system.name = root["name"] ? printable_name(root["name"], "the model's name", false) : printable(file_);  // shown: no raw control characters
   if (root["description"]) {
     system.description = printable_name(root["description"], "the model's description", false);
   }
@@ -128,8 +128,19 @@ System ModelReader::read(const YAML::Node& root) {
 
 }  // namespace model_reading
 
+namespace {
+
+// A model past kMaxModelBytes, refused before it is parsed.
+ModelError too_large(const std::string& file) {
+  return ModelError({file, 0, 0}, "the model is larger than " + std::to_string(kMaxModelBytes) +
+                                      " bytes (4 MiB; a model is a few kilobytes): not read");
+}
+
+}  // namespace
+
 System parse_model(const std::string& text, const std::string& file) {
   using model_reading::ModelReader;
+  if (text.size() > kMaxModelBytes) throw too_large(file);
   YAML::Node root;
   try {
     root = YAML::Load(text);
@@ -196,10 +207,15 @@ std::string model_code_text(const std::string& text, const std::string& file) {
 std::string read_model_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ModelError({path, 0, 0}, "cannot open the model file");
-  std::stringstream text;
-  text << in.rdbuf();
+  // read in blocks, never past the bound (/dev/zero, a log file named by mistake)
+  std::string text;
+  char block[65536];
+  while (in.read(block, sizeof block) || in.gcount() > 0) {
+    text.append(block, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxModelBytes) throw too_large(path);
+  }
   if (in.bad()) throw ModelError({path, 0, 0}, "cannot read the model file");
-  return text.str();
+  return text;
 }
 
 System load_model(const std::string& path) {

@@ -9,9 +9,12 @@
 
 #include <cerrno>
 #include <chrono>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+#include <thread>
 
 #include "unidyn/numeric/digest.hpp"
 
@@ -190,7 +193,8 @@ CacheLocation::~CacheLocation() {
   fs::remove_all(directory_, error);
 }
 
-EntryLock::EntryLock(const fs::path& directory, const std::string& name, bool exclusive) {
+EntryLock::EntryLock(const fs::path& directory, const std::string& name, bool exclusive,
+                     double wait_seconds) {
   const fs::path path = directory / (name + ".lock");
   fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
   if (fd_ < 0) throw std::runtime_error(system_error("cannot open " + path.string()));
@@ -205,17 +209,29 @@ EntryLock::EntryLock(const fs::path& directory, const std::string& name, bool ex
     fd_ = -1;
     throw std::runtime_error(path.string() + ": " + why);
   }
-  const int operation = exclusive ? LOCK_EX : LOCK_SH;
-  if (::flock(fd_, operation | LOCK_NB) == 0) return;
+  // polled, with a bound: another unidyn compiling the same model lets go within a minute or
+  // two, one that is stopped (Ctrl-Z, SIGSTOP) never does
+  const int operation = (exclusive ? LOCK_EX : LOCK_SH) | LOCK_NB;
   const auto start = std::chrono::steady_clock::now();
   while (::flock(fd_, operation) != 0) {
-    if (errno == EINTR) continue;
-    const std::string message = system_error("cannot lock " + path.string());
-    ::close(fd_);
-    fd_ = -1;
-    throw std::runtime_error(message);
+    waited_seconds_ =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::string message;
+    if (errno != EWOULDBLOCK && errno != EINTR) {
+      message = system_error("cannot lock " + path.string());
+    } else if (waited_seconds_ > wait_seconds) {
+      char seconds[32];
+      std::snprintf(seconds, sizeof seconds, "%g", wait_seconds);
+      message = "another unidyn has held " + path.string() + " for " + seconds +
+                " s (compiling this model, or stopped): not waiting longer";
+    }
+    if (!message.empty()) {
+      ::close(fd_);
+      fd_ = -1;
+      throw std::runtime_error(message);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-  waited_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 EntryLock::~EntryLock() {
@@ -290,8 +306,29 @@ void store_entry(const fs::path& directory, const std::string& name,
   sync_directory(directory);
 }
 
+namespace {
+
+// Removes <parent>/<prefix>-<pid>-XXXXXX of every process that no longer exists: what a run
+// killed while compiling left (SIGKILL, a power cut).
+void remove_abandoned_build_directories(const fs::path& parent, const std::string& prefix) {
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(parent, error)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with(prefix + "-") || !entry.is_directory(error)) continue;
+    const std::string rest = name.substr(prefix.size() + 1);
+    const std::size_t dash = rest.find('-');
+    if (dash == std::string::npos || dash == 0 || dash > 9) continue;
+    if (rest.find_first_not_of("0123456789") != dash) continue;
+    const auto pid = static_cast<pid_t>(std::stol(rest.substr(0, dash)));
+    if (::kill(pid, 0) != 0 && errno == ESRCH) fs::remove_all(entry.path(), error);
+  }
+}
+
+}  // namespace
+
 BuildDirectory::BuildDirectory(const fs::path& parent, const std::string& prefix) {
-  std::string pattern = (parent / (prefix + "-XXXXXX")).string();
+  remove_abandoned_build_directories(parent, prefix);
+  std::string pattern = (parent / (prefix + "-" + std::to_string(::getpid()) + "-XXXXXX")).string();
   if (::mkdtemp(pattern.data()) == nullptr) {
     throw std::runtime_error(system_error("cannot create a build directory in " + parent.string()));
   }

@@ -2,6 +2,7 @@
 // SHA-256 of its key, and loaded with dlopen only after the library has shown its key and
 // signature.
 #include "unidyn/numeric/native_code.hpp"
+#include "unidyn/numeric/shell_quoting.hpp"
 
 #include <dlfcn.h>
 #include <spawn.h>
@@ -10,8 +11,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -65,13 +68,6 @@ std::string compiler_identity(const std::string& compiler) {
   if (file.empty() || ::stat(file.c_str(), &s) != 0) return compiler + " (not found)";
   return compiler + " = " + file.string() + " " + std::to_string(s.st_size) + " bytes, changed " +
          std::to_string(s.st_mtim.tv_sec) + "." + std::to_string(s.st_mtim.tv_nsec);
-}
-
-// Text in single quotes for the shell.
-std::string shell_quoted(const std::string& text) {
-  std::string out = "'";
-  for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
 }
 
 std::string read_text(const fs::path& path) {
@@ -150,20 +146,59 @@ void* load_checked(const CacheEntry& entry, const Identity& expected) {
   throw Refused(why);
 }
 
-// `sh -c command`'s exit status (-1 when it could not run). Not std::system: that ignores SIGINT
-// in the whole process while the command runs, and the compiler may run in a thread of its own
-// while a simulation, which Ctrl-C must still stop, goes on.
-int run_shell(const std::string& command) {
-  const char* arguments[] = {"sh", "-c", command.c_str(), nullptr};
-  pid_t child = 0;
-  if (::posix_spawn(&child, "/bin/sh", nullptr, nullptr, const_cast<char* const*>(arguments),
-                    environ) != 0) {
-    return -1;
+// The compilers running now, by process group (0: a free slot), and whether the process has
+// asked them to stop: lock-free atomics, which a signal handler may read and write.
+std::atomic<pid_t> g_compilers[16];
+static_assert(std::atomic<pid_t>::is_always_lock_free);
+std::atomic<bool> g_compilers_stopped{false};
+
+// One compiler's process group in a free slot while it runs (none free: it cannot be stopped
+// early, and is waited for as before).
+class RunningCompiler {
+ public:
+  explicit RunningCompiler(pid_t group) {
+    for (auto& slot : g_compilers) {
+      pid_t free = 0;
+      if (slot.compare_exchange_strong(free, group)) {
+        slot_ = &slot;
+        break;
+      }
+    }
+    // a stop asked for between the check before spawning and here
+    if (g_compilers_stopped.load()) ::kill(-group, SIGKILL);
   }
+  ~RunningCompiler() {
+    if (slot_ != nullptr) slot_->store(0);
+  }
+  RunningCompiler(const RunningCompiler&) = delete;
+  RunningCompiler& operator=(const RunningCompiler&) = delete;
+
+ private:
+  std::atomic<pid_t>* slot_ = nullptr;
+};
+
+// `sh -c command`'s exit status (-1 when it could not run, -2 when it was stopped), in a process
+// group of its own: stop_native_compilers() kills the shell and every compiler it started. Not
+// std::system: that ignores SIGINT in the whole process while the command runs, and the compiler
+// may run in a thread of its own while a simulation, which Ctrl-C must still stop, goes on.
+int run_shell(const std::string& command) {
+  if (g_compilers_stopped.load()) return -2;
+  const char* arguments[] = {"sh", "-c", command.c_str(), nullptr};
+  posix_spawnattr_t attributes;
+  ::posix_spawnattr_init(&attributes);
+  ::posix_spawnattr_setpgroup(&attributes, 0);
+  ::posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  pid_t child = 0;
+  const int error = ::posix_spawn(&child, "/bin/sh", nullptr, &attributes,
+                                  const_cast<char* const*>(arguments), environ);
+  ::posix_spawnattr_destroy(&attributes);
+  if (error != 0) return -1;
+  const RunningCompiler running(child);
   int status = 0;
   while (::waitpid(child, &status, 0) < 0) {
     if (errno != EINTR) return -1;
   }
+  if (WIFSIGNALED(status) && g_compilers_stopped.load()) return -2;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
@@ -179,6 +214,7 @@ fs::path compile(const std::string& compiler, const std::string& flags, const st
   const auto start = std::chrono::steady_clock::now();
   const int status = run_shell(command);
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (status == -2) throw NativeCodeError("native code: the compiler was stopped (a signal)");
   std::error_code error;
   if (status != 0 || !fs::exists(library, error)) {
     const std::string diagnostics = read_text(log);
@@ -317,6 +353,13 @@ std::shared_ptr<const NativeLibrary> NativeLibrary::build(
     throw;
   } catch (const std::runtime_error& e) {
     throw NativeCodeError(std::string("native code: ") + e.what());
+  }
+}
+
+void stop_native_compilers() noexcept {
+  g_compilers_stopped.store(true);
+  for (auto& slot : g_compilers) {
+    if (const pid_t group = slot.load(); group > 0) ::kill(-group, SIGKILL);
   }
 }
 

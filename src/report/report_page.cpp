@@ -187,6 +187,22 @@ std::string script_safe(std::string_view s) {
   return out;
 }
 
+// JSON inside a <script>: every '<' written \u003c (JSON has '<' only inside strings, where
+// JSON.parse gives it back), so that no "</script", "<script" or "<!--" of a name or an output
+// ends the element or puts the HTML parser in its double-escaped state (a blank page).
+std::string json_script_safe(std::string_view s) {
+  std::string out;
+  out.reserve(s.size());
+  for (const char c : s) {
+    if (c == '<') {
+      out += "\\u003c";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 // Text for HTML: &, < and > escaped.
 std::string html_text(const std::string& s) {
   std::string out;
@@ -217,7 +233,7 @@ std::string report_page(const ReportModel& model, const ReportRun& run, const We
          "<meta name=\"generator\" content=\"unidyn report\">\n<title>" +
          html_text(model.system.name) + " - unidyn report</title>\n<style>\n" +
          std::string(assets.style) + "\n</style>\n</head>\n<body>\n<div id=\"app\"></div>\n" +
-         "<script type=\"application/json\" id=\"unidyn-data\">\n" + script_safe(data) +
+         "<script type=\"application/json\" id=\"unidyn-data\">\n" + json_script_safe(data) +
          "\n</script>\n<script>\n" + script_safe(assets.script) + "\n</script>\n</body>\n</html>\n";
 }
 

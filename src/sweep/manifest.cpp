@@ -6,7 +6,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <fstream>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -147,6 +149,7 @@ SweepManifest plan_sweep(const std::string& model_path, const std::string& model
       m.runs.push_back(std::move(run));
     }
   }
+  m.run_count = m.runs.size();
   return m;
 }
 
@@ -182,22 +185,22 @@ std::string manifest_text(const SweepManifest& m) {
   return out;
 }
 
-SweepManifest read_manifest(const std::string& path) {
+namespace {
+
+// The header's fields (everything before `runs:`), read as YAML.
+void read_header(const std::string& path, const std::string& header, SweepManifest& m) {
   const auto fail = [&](const YAML::Mark& mark, const std::string& what) {
     return ModelError({path, mark.line + 1, mark.column + 1}, what);
   };
   YAML::Node root;
   try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw std::invalid_argument("cannot read the manifest " + path);
+    root = YAML::Load(header);
   } catch (const YAML::Exception& e) {
     throw fail(e.mark, "not a sweep manifest: " + e.msg);
   }
   if (!root.IsMap() || !root["unidyn_sweep"] || root["unidyn_sweep"].Scalar() != "1") {
     throw ModelError({path, 1, 1}, "not a sweep manifest (unidyn_sweep: 1 expected)");
   }
-  SweepManifest m;
   try {
     m.model = root["model"].as<std::string>();
     m.model_sha256 = root["model_sha256"].as<std::string>();
@@ -209,23 +212,87 @@ SweepManifest read_manifest(const std::string& path) {
     m.seed = root["seed"].as<std::uint64_t>();
     m.names = root["names"].as<std::vector<std::string>>();
     if (root["modes_at"]) m.modes_at = root["modes_at"].as<std::vector<std::string>>();
-    for (const YAML::Node& row : root["runs"]) {
-      if (!row.IsSequence() || row.size() != m.names.size() + 2) {
-        throw fail(row.Mark(), fmt::format("a run is [index, seed, {} values]", m.names.size()));
-      }
-      SweepRun run;
-      run.index = row[0].as<std::size_t>();
-      run.seed = row[1].as<std::uint64_t>();
-      for (std::size_t k = 0; k < m.names.size(); ++k)
-        run.values.push_back(row[k + 2].as<double>());
-      if (run.index != m.runs.size()) {
-        throw fail(row.Mark(),
-                   fmt::format("run {} where run {} was expected", run.index, m.runs.size()));
-      }
-      m.runs.push_back(std::move(run));
-    }
   } catch (const YAML::Exception& e) {
     throw fail(e.mark, "not a sweep manifest: " + e.msg);
+  }
+}
+
+// The fields of a run's line `  - [index, seed, v1, ...]` (as manifest_text writes it), or
+// nothing. Only the index when `all` is false.
+std::optional<std::vector<std::string_view>> run_fields(std::string_view line, bool all) {
+  constexpr std::string_view open = "  - [";
+  if (line.substr(0, open.size()) != open || line.empty() || line.back() != ']') return {};
+  line = line.substr(open.size(), line.size() - open.size() - 1);
+  std::vector<std::string_view> fields;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = line.find(',', start);
+    std::string_view field = line.substr(start, comma - start);
+    while (!field.empty() && field.front() == ' ') field.remove_prefix(1);
+    fields.push_back(field);
+    if (comma == std::string_view::npos || !all) break;
+    start = comma + 1;
+  }
+  return fields;
+}
+
+template <typename Integer>
+std::optional<Integer> whole_number(std::string_view text) {
+  Integer value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) return {};
+  return value;
+}
+
+// One run from its line's fields, or nothing when a field is not a number.
+std::optional<SweepRun> run_of(const std::vector<std::string_view>& fields) {
+  SweepRun run;
+  const auto index = whole_number<std::size_t>(fields[0]);
+  const auto seed = whole_number<std::uint64_t>(fields[1]);
+  if (!index || !seed) return {};
+  run.index = *index;
+  run.seed = *seed;
+  for (std::size_t k = 2; k < fields.size(); ++k) {
+    const auto value = finite_number(fields[k]);
+    if (!value) return {};
+    run.values.push_back(*value);
+  }
+  return run;
+}
+
+}  // namespace
+
+SweepManifest read_manifest(const std::string& path, RunRange keep) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::invalid_argument("cannot read the manifest " + path);
+  SweepManifest m;
+  std::string header, line;
+  int number = 0;
+  bool runs = false;
+  while (!runs && std::getline(in, line)) {
+    ++number;
+    runs = line == "runs:";
+    if (!runs) header += line + "\n";
+  }
+  read_header(path, header, m);
+  if (!runs) throw ModelError({path, number, 1}, "not a sweep manifest (runs: expected)");
+  // the runs one line each, streamed: only those kept are held (a task of a 10^7-run manifest)
+  const std::string expected = fmt::format("a run is [index, seed, {} values]", m.names.size());
+  while (std::getline(in, line)) {
+    ++number;
+    const bool kept = m.run_count >= keep.first && m.run_count < keep.last;
+    const auto fields = run_fields(line, kept);
+    if (!fields) throw ModelError({path, number, 1}, expected + " on a line of its own");
+    if (kept && fields->size() != m.names.size() + 2) throw ModelError({path, number, 3}, expected);
+    const auto index = whole_number<std::size_t>(fields->front());
+    if (index != m.run_count) {
+      throw ModelError({path, number, 3}, fmt::format("run {} where run {} was expected",
+                                                      fields->front(), m.run_count));
+    }
+    ++m.run_count;
+    if (!kept) continue;
+    auto run = run_of(*fields);
+    if (!run) throw ModelError({path, number, 3}, expected + ", each a finite number");
+    m.runs.push_back(std::move(*run));
   }
   return m;
 }

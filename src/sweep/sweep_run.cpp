@@ -1,9 +1,7 @@
 // Running a chunk of a sweep, gathering its results, and the launchers (sweep/sweep_run.hpp).
 #include "unidyn/sweep/sweep_run.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -18,10 +16,13 @@
 #include "unidyn/equations/kane.hpp"
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/integrate/initial_state.hpp"
+#include "unidyn/io/atomic_file.hpp"
 #include "unidyn/io/csv.hpp"
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/numeric/compiled_system.hpp"
 #include "unidyn/numeric/digest.hpp"
+#include "unidyn/numeric/shell_quoting.hpp"
+#include "unidyn/symbolic/printable_text.hpp"
 
 namespace unidyn {
 namespace {
@@ -36,37 +37,6 @@ std::string result_header(const SweepManifest& m, const std::vector<std::string>
   if (!m.modes_at.empty()) out += ",stability,eigenvalues";
   for (const auto& c : columns) out += "," + csv_field("final." + c);
   return out + "\n";
-}
-
-// `text` as the file `path`, whole or not at all: a temporary file beside it, synced, renamed
-// into place, and the directory synced.
-void write_atomically(const fs::path& path, const std::string& text) {
-  const fs::path temporary =
-      path.parent_path() / fmt::format(".{}.{}.tmp", path.filename().string(), getpid());
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error("cannot write " + temporary.string());
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n <= 0) {
-      ::close(fd);
-      std::remove(temporary.c_str());
-      throw std::runtime_error("cannot write " + temporary.string());
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write " + temporary.string());
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot rename into " + path.string());
-  }
-  if (const int dir = ::open(path.parent_path().c_str(), O_RDONLY | O_DIRECTORY); dir >= 0) {
-    ::fsync(dir);
-    ::close(dir);
-  }
 }
 
 // The modes of the manifest's operating point with a run's parameters: its verdict and
@@ -155,6 +125,35 @@ RunRow run_one(const SweepManifest& m, const SweepRun& run, const System& system
   return {row + "\n", s.ok};
 }
 
+// The last line of a result file: the manifest (its SHA-256) and the run it was made for,
+// written with the rest (atomically), so that a file whole and made for this run ends with it.
+std::string result_stamp(const std::string& manifest_sha256, const SweepRun& run) {
+  return fmt::format("# unidyn sweep result of manifest sha256 {}, run {}, seed {}\n",
+                     manifest_sha256, run.index, run.seed);
+}
+
+// The header and row of the result file at `path` when it is whole and was made for this run of
+// this manifest: three lines, the row starting with the run's index and seed, then its stamp.
+// None when it is not (missing, cut short, copied from another run or from before a re-plan).
+std::optional<std::pair<std::string, std::string>> valid_result(const fs::path& path,
+                                                                const std::string& manifest_sha256,
+                                                                const SweepRun& run) {
+  std::error_code error;
+  const auto size = fs::file_size(path, error);
+  if (error || size > (1u << 20)) return std::nullopt;  // a result is one row of numbers
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t first = text.find('\n');
+  const std::size_t second = first == std::string::npos ? first : text.find('\n', first + 1);
+  if (second == std::string::npos) return std::nullopt;
+  const std::string row = text.substr(first + 1, second - first - 1);
+  if (text.substr(second + 1) != result_stamp(manifest_sha256, run) ||
+      !row.starts_with(fmt::format("{},{},", run.index, run.seed))) {
+    return std::nullopt;
+  }
+  return std::pair{text.substr(0, first), row};
+}
+
 }  // namespace
 
 fs::path default_results_directory(const std::string& manifest_path) {
@@ -165,11 +164,17 @@ fs::path result_path(const fs::path& directory, std::size_t index) {
   return directory / fmt::format("run-{:07}.csv", index);
 }
 
-ChunkReport run_sweep_rows(const SweepManifest& m, std::size_t first, std::size_t last,
-                           const fs::path& directory, std::ostream& log) {
-  if (first > last || last > m.runs.size()) {
+ChunkReport run_sweep_rows(const SweepManifest& m, const std::string& manifest_sha256,
+                           std::size_t first, std::size_t last, const fs::path& directory,
+                           std::ostream& log) {
+  if (first > last || last > m.run_count) {
     throw std::invalid_argument(
-        fmt::format("--rows {}:{} is outside the manifest's {} runs", first, last, m.runs.size()));
+        fmt::format("--rows {}:{} is outside the manifest's {} runs", first, last, m.run_count));
+  }
+  // the runs held (those a manifest was read for): run k at k − held_from
+  const std::size_t held_from = m.runs.empty() ? first : m.runs.front().index;
+  if (first < held_from || last - held_from > m.runs.size()) {
+    throw std::logic_error("run_sweep_rows: the manifest was not read for these runs");
   }
   // the model as planned, compiled once for the chunk (native code through its cache)
   const std::string text = read_model_text(m.model);
@@ -198,38 +203,46 @@ ChunkReport run_sweep_rows(const SweepManifest& m, std::size_t first, std::size_
   ChunkReport report;
   for (std::size_t k = first; k < last; ++k) {
     const fs::path path = result_path(directory, k);
-    if (fs::exists(path)) {
+    // a result made for this run of this manifest is kept; anything else there is made again
+    const SweepRun& run = m.runs[k - held_from];
+    if (valid_result(path, manifest_sha256, run)) {
       ++report.skipped;
       continue;
     }
-    const RunRow row =
-        run_one(m, m.runs[k], system, compiled, columns.size(), modes ? &*modes : nullptr);
-    write_atomically(path, header + row.text);
+    const bool stale = fs::exists(path);
+    const RunRow row = run_one(m, run, system, compiled, columns.size(), modes ? &*modes : nullptr);
+    write_atomically(path, header + row.text + result_stamp(manifest_sha256, run));
     ++report.done;
+    if (stale) {
+      ++report.remade;
+      log << "run " << k << ": the result there was not this manifest's or not whole: made again\n";
+    }
     if (!row.ok) ++report.failed;
     log << "run " << k << (row.ok ? "" : " (FAILED)") << " written to " << path.string() << "\n";
   }
   return report;
 }
 
-std::vector<std::size_t> gather_sweep(const SweepManifest& m, const std::string& manifest_sha256,
-                                      const fs::path& directory, std::ostream& out) {
-  out << "# unidyn sweep of " << m.model << ", manifest sha256 " << manifest_sha256 << ", "
-      << m.runs.size() << " runs\n";
-  std::vector<std::size_t> missing;
-  bool header = false;
+GatherReport gather_sweep(const SweepManifest& m, const std::string& manifest_sha256,
+                          const fs::path& directory, std::ostream& out) {
+  GatherReport report;
+  std::string header, rows;
   for (const SweepRun& run : m.runs) {
-    std::ifstream in(result_path(directory, run.index));
-    std::string first, row;
-    if (!in || !std::getline(in, first) || !std::getline(in, row)) {
-      missing.push_back(run.index);
+    const fs::path path = result_path(directory, run.index);
+    const auto result = valid_result(path, manifest_sha256, run);
+    if (!result) {
+      (fs::exists(path) ? report.stale : report.missing).push_back(run.index);
       continue;
     }
-    if (!header) out << first << "\n";
-    header = true;
-    out << row << "\n";
+    if (header.empty()) header = result->first + "\n";
+    rows += result->second + "\n";
   }
-  return missing;
+  // no table from results that are not this manifest's
+  if (!report.stale.empty()) return report;
+  out << "# unidyn sweep of " << m.model << ", manifest sha256 " << manifest_sha256 << ", "
+      << m.runs.size() << " runs\n"
+      << header << rows;
+  return report;
 }
 
 std::pair<std::size_t, std::size_t> task_rows(std::size_t runs, std::size_t chunk,
@@ -243,41 +256,57 @@ std::pair<std::size_t, std::size_t> task_rows(std::size_t runs, std::size_t chun
   return {first, std::min(first + chunk, runs)};
 }
 
+namespace {
+
+// The lines every launcher has after its #! and #SBATCH lines: what it is (the manifest's path made
+// printable: a newline in it cannot end the comment), and the two paths as shell variables, each
+// quoted as one word — the commands below only ever expand them inside double quotes, so nothing in
+// a path is run (a directory named inj'$(touch PWNED)' is a name).
+std::string launcher_preamble(const std::string& what, const std::string& command,
+                              const std::string& manifest_path) {
+  return "# " + what + "\n# Then: unidyn sweep gather " + printable(manifest_path) +
+         "\nset -euo pipefail\nexport UNIDYN=" + shell_quoted(command) +
+         "\nexport MANIFEST=" + shell_quoted(manifest_path) + "\n";
+}
+
+}  // namespace
+
 std::string slurm_script(const std::string& command, const std::string& manifest_path,
                          std::size_t runs, std::size_t chunk) {
   const std::size_t tasks = (runs + chunk - 1) / chunk;
   return fmt::format(
-      "#!/bin/bash\n"
-      "# A Slurm job array of the sweep {manifest}: {runs} runs in {tasks} tasks of up to "
-      "{chunk}.\n"
-      "# Submit with `sbatch` from a directory every node sees; a task run again (requeued, or by\n"
-      "# hand) skips the runs it finds done. Then: unidyn sweep gather {manifest}\n"
-      "#SBATCH --job-name=unidyn-sweep\n"
-      "#SBATCH --array=0-{last}\n"
-      "#SBATCH --ntasks=1\n"
-      "#SBATCH --cpus-per-task=1\n"
-      "set -euo pipefail\n"
-      "'{command}' sweep run '{manifest}' --chunk {chunk} --task \"$SLURM_ARRAY_TASK_ID\"\n",
-      fmt::arg("manifest", manifest_path), fmt::arg("runs", runs), fmt::arg("tasks", tasks),
-      fmt::arg("chunk", chunk), fmt::arg("last", tasks == 0 ? 0 : tasks - 1),
-      fmt::arg("command", command));
+             "#!/bin/bash\n"
+             "#SBATCH --job-name=unidyn-sweep\n"
+             "#SBATCH --array=0-{last}\n"
+             "#SBATCH --ntasks=1\n"
+             "#SBATCH --cpus-per-task=1\n",
+             fmt::arg("last", tasks == 0 ? 0 : tasks - 1)) +
+         launcher_preamble(
+             fmt::format("A Slurm job array of the sweep: {} runs in {} tasks of up to {}. Submit "
+                         "with `sbatch` from a directory every node sees; a task run again "
+                         "(requeued, or by hand) skips the runs it finds done.",
+                         runs, tasks, chunk),
+             command, manifest_path) +
+         fmt::format(
+             "\"$UNIDYN\" sweep run \"$MANIFEST\" --chunk {} --task \"$SLURM_ARRAY_TASK_ID\"\n",
+             chunk);
 }
 
 std::string parallel_script(const std::string& command, const std::string& manifest_path,
                             std::size_t runs, std::size_t chunk) {
   const std::size_t tasks = (runs + chunk - 1) / chunk;
-  return fmt::format(
-      "#!/bin/bash\n"
-      "# The sweep {manifest} by GNU parallel: {runs} runs in {tasks} tasks of up to {chunk}, one\n"
-      "# per core; run it again to finish what an interrupted one left.\n"
-      "# Then: unidyn sweep gather {manifest}\n"
-      "set -euo pipefail\n"
-      "seq 0 {last} | parallel --halt now,fail=1 '{command}' sweep run '{manifest}' --chunk "
-      "{chunk} "
-      "--task {{}}\n",
-      fmt::arg("manifest", manifest_path), fmt::arg("runs", runs), fmt::arg("tasks", tasks),
-      fmt::arg("chunk", chunk), fmt::arg("last", tasks == 0 ? 0 : tasks - 1),
-      fmt::arg("command", command));
+  // GNU parallel runs its command through a shell: the variables are expanded there, inside
+  // double quotes, never spliced into its text
+  return "#!/bin/bash\n" +
+         launcher_preamble(fmt::format("The sweep by GNU parallel: {} runs in {} tasks of up to "
+                                       "{}, one per core; run it again to finish what an "
+                                       "interrupted one left.",
+                                       runs, tasks, chunk),
+                           command, manifest_path) +
+         fmt::format(
+             "seq 0 {} | parallel --halt now,fail=1 '\"$UNIDYN\" sweep run \"$MANIFEST\" --chunk "
+             "{} --task {{}}'\n",
+             tasks == 0 ? 0 : tasks - 1, chunk);
 }
 
 }  // namespace unidyn

@@ -312,5 +312,33 @@ TEST(HonestSummaries, AFallingBicycleStopsAtItsGimbalLock) {
   }
 }
 
+// A stiff model (a heavily damped spring: m x'' = -k x - c x', c = 1e4, so λ = -1e4 and -1e-4)
+// under dopri5 stops within a few thousand steps saying it is stiff and what to use (it used to
+// creep towards max_steps); CVODE then follows the slow mode, x = x0 exp(-k t / c) to 1e-6 after
+// the fast one has died away.
+TEST(HonestSummaries, AStiffModelUnderDopri5SaysSo) {
+  const std::string model = temp_path("stiff.yaml");
+  write_file(model,
+             "unidyn: 1\nparameters: {m: 1, k: 1, c: 1e4}\ncoordinates: [x]\nparticles:\n"
+             "  P: {mass: m, position: [x, 0, 0]}\nforces:\n"
+             "  - spring: {from: P, to: [0, 0, 0], stiffness: k}\n"
+             "  - damper: {from: P, to: [0, 0, 0], coefficient: c}\n"
+             "initial: {x: 1}\nsimulate: {t_end: 100, output_step: 1, rtol: 1e-8}\n");
+  const Outcome explicit_method = run("simulate '" + model + "' -o /dev/null");
+  EXPECT_EQ(explicit_method.status, 1) << explicit_method.out;
+  EXPECT_TRUE(contains(explicit_method.out, "the model is stiff")) << explicit_method.out;
+  EXPECT_TRUE(contains(explicit_method.out, "--method cvode")) << explicit_method.out;
+  // about 1 000 steps of h = 3.3e-4 (the stability bound over 1e4)
+  EXPECT_LT(number_after(explicit_method.out, "stopped at t = "), 5.0) << explicit_method.out;
+  const std::string csv = temp_path("stiff.csv");
+  const Outcome bdf = run("simulate '" + model + "' --method cvode -o '" + csv + "'");
+  ASSERT_EQ(bdf.status, 0) << bdf.out;
+  const Csv rows = parse_csv(read_file(csv));
+  for (std::size_t k = 1; k < rows.rows.size(); ++k) {
+    const double t = rows.at(k, "t");
+    EXPECT_NEAR(rows.at(k, "x"), std::exp(-t / 1e4), 1e-6) << t;
+  }
+}
+
 }  // namespace
 }  // namespace unidyn

@@ -181,5 +181,54 @@ TEST(HostileInput, InitialValueDividingByZero) {
   EXPECT_NE(set.status, 23) << set.err;  // LeakSanitizer's exit status
 }
 
+// A model file past 4 MiB (/dev/zero, a log named by mistake) is refused before it is parsed:
+// exit 2, not gigabytes of memory or std::bad_alloc.
+TEST(HostileInput, ModelFilesHaveASizeBound) {
+  const Outcome zero = run("check /dev/zero");
+  expect_bad_input(zero, "/dev/zero");
+  EXPECT_TRUE(contains(zero.err, "larger than 4194304 bytes")) << zero.err;
+  const std::string big = temp_path("big.yaml");
+  write_file(big, model_text("") + "# " + std::string(5u << 20, 'x') + "\n");
+  expect_bad_input(run("check '" + big + "'"), "5 MiB");
+  std::remove(big.c_str());
+}
+
+// A model without `name:` is named by its file, escaped like any name: a file name with an
+// escape sequence does not reach the terminal raw.
+TEST(HostileInput, AFileNameAsTheModelsNameIsPrintable) {
+  const std::string path = temp_path("a\x1b[31mb.yaml");
+  write_file(path, model_text(""));
+  const Outcome r = run("simulate '" + path + "' --t-end 0.1 -o /dev/null");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_FALSE(contains(r.out, "\x1b")) << r.out;
+  EXPECT_TRUE(contains(r.out, "a\\e[31mb.yaml")) << r.out;
+  std::remove(path.c_str());
+}
+
+// `sweep plan` refuses what it would turn into something else: a negative seed (2^64 - 1 once
+// converted), a negative t_end, output step or tolerance (silently dropped before).
+TEST(HostileInput, SweepPlanRefusesNegativeValues) {
+  for (const char* option : {"--seed -1", "--t-end -1", "--output-step -0.1", "--rtol -1e-6"}) {
+    const Outcome r = run("sweep plan rotating-hoop --grid Omega=1:2:2 " + std::string(option) +
+                          " -o '" + temp_path("plan.yaml") + "'");
+    EXPECT_EQ(r.status, 2) << option << ": " << r.out << r.err;
+  }
+}
+
+// Past a file-size limit (ulimit -f, in KiB) the CSV cannot grow: the run fails (exit 1, not
+// SIGXFSZ's 153) with the file cut back to its last whole row, all of them counted.
+TEST(HostileInput, AFileSizeLimitEndsTheRunWithWholeRows) {
+  const std::string csv = temp_path("limited.csv");
+  const Outcome r = run("simulate kepler --t-end 1000 -o '" + csv + "'", "ulimit -f 2048;");
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  const std::string text = read_file(csv);
+  ASSERT_FALSE(text.empty());
+  EXPECT_LE(text.size(), 2048u * 1024u);
+  EXPECT_EQ(text.back(), '\n');
+  const Csv rows = parse_csv(text);
+  EXPECT_TRUE(contains(r.out, std::to_string(rows.rows.size()) + " rows written")) << r.out;
+  std::remove(csv.c_str());
+}
+
 }  // namespace
 }  // namespace unidyn

@@ -217,5 +217,47 @@ TEST(Report, SamePageOnEveryRun) {
   std::remove(again.c_str());
 }
 
+// Names are data: a model name and an output name holding "<!--<script>" and "</script>" cannot
+// end the page's data element or put the HTML parser in its double-escaped script state (a blank
+// page): the page has its two <script> elements and no "<!--" at all.
+TEST(Report, NamesCannotEndTheScriptElement) {
+  const std::string model = temp_path("script-names.yaml"), page = temp_path("script-names.html");
+  write_file(model,
+             "unidyn: 1\nname: \"x <!--<script> </script> y\"\nparameters: {m: 1, g: 9.81}\n"
+             "coordinates: [z]\nparticles:\n  P: {mass: m, position: [0, 0, z]}\n"
+             "forces:\n  - gravity: -g*E3\noutputs:\n  \"<!--<script>\": z\n"
+             "simulate: {t_end: 0.1, output_step: 0.01}\n");
+  const Outcome r = run("report '" + model + "' -o '" + page + "'");
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  const std::string html = read_file(page);
+  std::size_t scripts = 0;
+  for (std::size_t at = html.find("<script"); at != std::string::npos;
+       at = html.find("<script", at + 1)) {
+    ++scripts;
+  }
+  EXPECT_EQ(scripts, 2u);
+  EXPECT_EQ(html.find("<!--"), std::string::npos);
+  EXPECT_NE(html.find("x \\u003c!--\\u003cscript> \\u003c/script> y"), std::string::npos);
+  std::remove(page.c_str());
+}
+
+// The page is written whole at the end: a report killed on its way leaves the previous page as
+// it was (it used to be truncated to 0 bytes at the start), and no temporary file.
+TEST(Report, AKilledReportLeavesThePreviousPage) {
+  const std::string directory = temp_path("killed-report");
+  std::filesystem::remove_all(directory);
+  std::filesystem::create_directories(directory);
+  const std::string page = directory + "/page.html";
+  write_file(page, "the previous page\n");
+  const Outcome r =
+      run("report double-pendulum --t-end 1000 -o '" + page + "'", "timeout -s TERM 0.5");
+  EXPECT_NE(r.status, 0) << "the report ended before it was killed";
+  EXPECT_EQ(read_file(page), "the previous page\n");
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(directory)) ++files;
+  EXPECT_EQ(files, 1u);
+  std::filesystem::remove_all(directory);
+}
+
 }  // namespace
 }  // namespace unidyn::cli_test

@@ -232,5 +232,44 @@ TEST(CodeCache, OneProcessMakesAnEntryAtATime) {
   EXPECT_EQ(mode_of(cache / "e.lock"), 0600u);
 }
 
+// A lock held for good (a unidyn stopped with Ctrl-Z while compiling) is waited for with a bound,
+// then the wait is given up with the reason (the run goes on on the tape); it used to wait forever.
+TEST(CodeCache, ALockHeldForGoodIsWaitedForWithABound) {
+  const fs::path cache = fresh_directory("stuck");
+  const EntryLock held(cache, "e", true);
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const EntryLock waiting(cache, "e", true, 0.3);
+    ADD_FAILURE() << "a held lock was taken";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("for 0.3 s (compiling this model, or stopped): not "
+                                         "waiting longer"),
+              std::string::npos)
+        << e.what();
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GE(seconds, 0.3);
+  EXPECT_LT(seconds, 2.0);
+}
+
+// A build directory left by a process that no longer exists (killed while compiling) is removed
+// by the next compilation; one of a live process, and anything else, is left alone.
+TEST(CodeCache, AbandonedBuildDirectoriesAreRemoved) {
+  const fs::path cache = fresh_directory("abandoned");
+  // a pid no process has: past the kernel's pid_max (at most 2^22)
+  fs::create_directories(cache / "build-99999999-AbCdEf");
+  fs::create_directories(cache / ("build-" + std::to_string(::getppid()) + "-Living"));
+  fs::create_directories(cache / "build-notapid-Xyz");
+  {
+    const BuildDirectory build(cache);
+    EXPECT_TRUE(
+        build.path().filename().string().starts_with("build-" + std::to_string(::getpid()) + "-"));
+  }
+  EXPECT_FALSE(fs::exists(cache / "build-99999999-AbCdEf"));
+  EXPECT_TRUE(fs::exists(cache / ("build-" + std::to_string(::getppid()) + "-Living")));
+  EXPECT_TRUE(fs::exists(cache / "build-notapid-Xyz"));
+}
+
 }  // namespace
 }  // namespace unidyn

@@ -104,6 +104,36 @@ TEST(SweepManifest, ReadBackBitForBit) {
   std::filesystem::remove(path);
 }
 
+// A manifest read for some of its runs holds those runs (as a whole read has them) and counts all;
+// a row out of place outside the range is still found.
+TEST(SweepManifest, ReadForARangeOfRuns) {
+  const SweepManifest m = plan({"theta=0.1:1.3:7"}, {"m=N(1,0.3)"}, 5, 99);
+  const std::string path = testing::TempDir() + "manifest_range.yaml";
+  std::ofstream(path) << manifest_text(m);
+  const SweepManifest some = read_manifest(path, {10, 13});
+  EXPECT_EQ(some.run_count, 35u);
+  ASSERT_EQ(some.runs.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(some.runs[k].index, 10 + k);
+    EXPECT_EQ(some.runs[k].seed, m.runs[10 + k].seed);
+    EXPECT_EQ(some.runs[k].values, m.runs[10 + k].values);
+  }
+  EXPECT_TRUE(read_manifest(path, {0, 0}).runs.empty());
+  std::string text = manifest_text(m);
+  const std::size_t row = text.find("\n  - [20, ");
+  ASSERT_NE(row, std::string::npos);
+  text.replace(row + 6, 2, "21");
+  std::ofstream(path) << text;
+  try {
+    read_manifest(path, {0, 3});
+    ADD_FAILURE() << "a run out of place was read";
+  } catch (const ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("run 21 where run 20 was expected"), std::string::npos)
+        << e.what();
+  }
+  std::filesystem::remove(path);
+}
+
 TEST(SweepManifest, BadPlansRefused) {
   for (const char* text : {"a", "a=1:2", "a=1:2:0", "=1:2:3", "a=x:2:3", "a=1:2:3.5"}) {
     EXPECT_THROW(parse_grid_axis(text), std::invalid_argument) << text;

@@ -53,7 +53,7 @@ struct Sweep {
 TEST(SweepRun, EachResultIsTheRunMadeDirectly) {
   Sweep s("double-pendulum", {"theta1=0.2:0.8:4", "m2=1:2:2"}, 1.0);
   std::ostringstream log;
-  const ChunkReport report = run_sweep_rows(s.manifest, 0, 8, s.dir / "runs", log);
+  const ChunkReport report = run_sweep_rows(s.manifest, "h", 0, 8, s.dir / "runs", log);
   EXPECT_EQ(report.done, 8u);
   EXPECT_EQ(report.failed, 0u);
   // run 5: theta1 = 0.2 + 2 (0.6/3) (0.6000000000000001), m2 = 2, simulated here without the sweep
@@ -71,24 +71,29 @@ TEST(SweepRun, EachResultIsTheRunMadeDirectly) {
   EXPECT_EQ(result.find(expected), result.find('\n') + 1) << result;
   std::string tail;
   for (const double v : last) tail += fmt::format(",{}", v);
-  EXPECT_EQ(result.substr(result.size() - tail.size() - 1), tail + "\n") << result;
+  const std::string stamp =
+      fmt::format("# unidyn sweep result of manifest sha256 h, run 5, seed {}\n",
+                  s.manifest.runs[5].seed);
+  EXPECT_EQ(result.substr(result.size() - stamp.size() - tail.size() - 1), tail + "\n" + stamp)
+      << result;
 }
 
 TEST(SweepRun, ChunksRunAgainOrOverlappingChangeNothing) {
   Sweep s("double-pendulum", {"theta1=0.1:1:6"}, 0.5);
   std::ostringstream log;
-  run_sweep_rows(s.manifest, 0, 4, s.dir / "runs", log);
+  run_sweep_rows(s.manifest, "h", 0, 4, s.dir / "runs", log);
   const std::string before = read(result_path(s.dir / "runs", 2));
   const auto written = fs::last_write_time(result_path(s.dir / "runs", 2));
   // a temporary file a killed worker left does not count as a result
   std::ofstream(s.dir / "runs" / ".run-0000004.csv.999.tmp") << "half a row";
-  const ChunkReport again = run_sweep_rows(s.manifest, 2, 6, s.dir / "runs", log);
+  const ChunkReport again = run_sweep_rows(s.manifest, "h", 2, 6, s.dir / "runs", log);
   EXPECT_EQ(again.skipped, 2u);
   EXPECT_EQ(again.done, 2u);
   EXPECT_EQ(read(result_path(s.dir / "runs", 2)), before);
   EXPECT_EQ(fs::last_write_time(result_path(s.dir / "runs", 2)), written);
   std::ostringstream table;
-  EXPECT_TRUE(gather_sweep(s.manifest, "abc", s.dir / "runs", table).empty());
+  const GatherReport gathered = gather_sweep(s.manifest, "h", s.dir / "runs", table);
+  EXPECT_TRUE(gathered.missing.empty() && gathered.stale.empty());
   const auto lines = [](const std::string& text) {
     std::vector<std::string> out;
     std::istringstream in(text);
@@ -97,7 +102,7 @@ TEST(SweepRun, ChunksRunAgainOrOverlappingChangeNothing) {
   };
   const auto rows = lines(table.str());
   ASSERT_EQ(rows.size(), 8u);  // the comment, the header, six runs in order
-  EXPECT_EQ(rows[0], "# unidyn sweep of " + s.model + ", manifest sha256 abc, 6 runs");
+  EXPECT_EQ(rows[0], "# unidyn sweep of " + s.model + ", manifest sha256 h, 6 runs");
   for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(rows[k + 2].substr(0, 2), std::to_string(k) + ",");
 }
 
@@ -105,11 +110,12 @@ TEST(SweepRun, MissingRunsAreNamedAndAFailedRunIsARecord) {
   // runs 0 and 2 not run yet: named
   Sweep s("double-pendulum", {"theta1=0.1:0.2:3"}, 0.1);
   std::ostringstream log, table;
-  run_sweep_rows(s.manifest, 1, 2, s.dir / "runs", log);
-  EXPECT_EQ(gather_sweep(s.manifest, "h", s.dir / "runs", table), (std::vector<std::size_t>{0, 2}));
+  run_sweep_rows(s.manifest, "h", 1, 2, s.dir / "runs", log);
+  EXPECT_EQ(gather_sweep(s.manifest, "h", s.dir / "runs", table).missing,
+            (std::vector<std::size_t>{0, 2}));
   // the heavy top started at θ = 0, the 3-1-3 angles' gimbal lock: its start fails, recorded
   Sweep gimbal("heavy-top", {"theta=0:0.1:2"}, 0.1);
-  const ChunkReport report = run_sweep_rows(gimbal.manifest, 0, 2, gimbal.dir / "runs", log);
+  const ChunkReport report = run_sweep_rows(gimbal.manifest, "h", 0, 2, gimbal.dir / "runs", log);
   EXPECT_EQ(report.failed, 1u);
   const std::string failed = read(result_path(gimbal.dir / "runs", 0));
   EXPECT_NE(failed.find(",0,0,0,"), std::string::npos) << failed;
@@ -123,7 +129,7 @@ TEST(SweepRun, EachRunsModesAtTheOperatingPoint) {
   Sweep s("rotating-hoop", {"Omega=2:6:3"}, 0.1);
   s.manifest.modes_at = {"phi=pi"};
   std::ostringstream log;
-  run_sweep_rows(s.manifest, 0, 3, s.dir / "runs", log);
+  run_sweep_rows(s.manifest, "h", 0, 3, s.dir / "runs", log);
   const System system = load_model(s.model);
   const SimulationStart start = initial_state(system, {});
   const double g = start.parameters[*system.find_parameter("g")];
@@ -153,7 +159,7 @@ TEST(SweepRun, ADrivenPointGetsItsFloquetMultipliers) {
   Sweep s("driven-pendulum", {"Omega=150:250:2"}, 0.01);
   s.manifest.modes_at = {"phi=0"};
   std::ostringstream log;
-  run_sweep_rows(s.manifest, 0, 2, s.dir / "runs", log);
+  run_sweep_rows(s.manifest, "h", 0, 2, s.dir / "runs", log);
   const std::string falls = read(result_path(s.dir / "runs", 0));
   const std::string stands = read(result_path(s.dir / "runs", 1));
   EXPECT_NE(falls.find(",unstable,multipliers: 1.21"), std::string::npos) << falls;
@@ -164,8 +170,8 @@ TEST(SweepRun, AModelChangedSinceThePlanIsRefused) {
   Sweep s("double-pendulum", {"theta1=0.1:0.2:2"}, 0.1);
   std::ofstream(s.model, std::ios::app) << "# edited\n";
   std::ostringstream log;
-  EXPECT_THROW(run_sweep_rows(s.manifest, 0, 2, s.dir / "runs", log), std::invalid_argument);
-  EXPECT_THROW(run_sweep_rows(s.manifest, 0, 3, s.dir / "runs", log), std::invalid_argument);
+  EXPECT_THROW(run_sweep_rows(s.manifest, "h", 0, 2, s.dir / "runs", log), std::invalid_argument);
+  EXPECT_THROW(run_sweep_rows(s.manifest, "h", 0, 3, s.dir / "runs", log), std::invalid_argument);
 }
 
 TEST(SweepRun, TasksCoverTheRunsOnce) {
@@ -179,11 +185,45 @@ TEST(SweepRun, TasksCoverTheRunsOnce) {
   EXPECT_THROW(task_rows(23, 0, 0), std::invalid_argument);
   const std::string slurm = slurm_script("/bin/unidyn", "/m.sweep.yaml", 23, 5);
   EXPECT_NE(slurm.find("#SBATCH --array=0-4\n"), std::string::npos);
-  EXPECT_NE(slurm.find("'/bin/unidyn' sweep run '/m.sweep.yaml' --chunk 5 --task "
+  EXPECT_NE(slurm.find("export UNIDYN='/bin/unidyn'\nexport MANIFEST='/m.sweep.yaml'\n"),
+            std::string::npos);
+  EXPECT_NE(slurm.find("\"$UNIDYN\" sweep run \"$MANIFEST\" --chunk 5 --task "
                        "\"$SLURM_ARRAY_TASK_ID\""),
             std::string::npos);
   EXPECT_NE(parallel_script("/bin/unidyn", "/m.sweep.yaml", 23, 5).find("seq 0 4 | parallel"),
             std::string::npos);
+}
+
+// A result is kept only when it is whole and was made for its run of this manifest: results from
+// before a re-plan (another manifest hash), copied from another run, cut short or empty are made
+// again by `run`, and `gather` writes no table while one is there.
+TEST(SweepRun, StaleOrBrokenResultsAreMadeAgainAndNeverGathered) {
+  Sweep s("double-pendulum", {"theta1=0.1:0.4:4"}, 0.1);
+  std::ostringstream log;
+  const fs::path runs = s.dir / "runs";
+  run_sweep_rows(s.manifest, "old", 0, 4, runs, log);
+  // the same files under a new manifest (a re-plan): stale, all four
+  std::ostringstream table;
+  const GatherReport stale = gather_sweep(s.manifest, "new", runs, table);
+  EXPECT_EQ(stale.stale, (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_EQ(table.str(), "");
+  const ChunkReport remade = run_sweep_rows(s.manifest, "new", 0, 4, runs, log);
+  EXPECT_EQ(remade.done, 4u);
+  EXPECT_EQ(remade.remade, 4u);
+  EXPECT_EQ(remade.skipped, 0u);
+  // run 1's result copied over run 2's, run 3's cut short, run 0's emptied
+  fs::copy_file(result_path(runs, 1), result_path(runs, 2), fs::copy_options::overwrite_existing);
+  const std::string whole = read(result_path(runs, 3));
+  std::ofstream(result_path(runs, 3), std::ios::trunc) << whole.substr(0, whole.size() / 2);
+  std::ofstream(result_path(runs, 0), std::ios::trunc);
+  EXPECT_EQ(gather_sweep(s.manifest, "new", runs, table).stale,
+            (std::vector<std::size_t>{0, 2, 3}));
+  const ChunkReport again = run_sweep_rows(s.manifest, "new", 0, 4, runs, log);
+  EXPECT_EQ(again.remade, 3u);
+  EXPECT_EQ(again.skipped, 1u);
+  EXPECT_EQ(read(result_path(runs, 3)), whole);
+  const GatherReport gathered = gather_sweep(s.manifest, "new", runs, table);
+  EXPECT_TRUE(gathered.stale.empty() && gathered.missing.empty());
 }
 
 }  // namespace

@@ -26,6 +26,9 @@ class DormandPrince54 final : public EmbeddedRungeKutta {
   bool attempt(double h, double t_new) override;
   double error_norm(double h) override;
   void commit(double h, double t_new) override;
+  double stiffness_estimate(double h) const override;
+  // DOPRI5's stability region reaches −3.3 on the negative axis; Hairer's test uses 3.25
+  double stability_bound() const override { return 3.25; }
   void interpolate(double t, Eigen::VectorXd& y_out) const override;
 
   // Stages 2–7 in k_[1..6] (the first is first_stage(): first same as last).

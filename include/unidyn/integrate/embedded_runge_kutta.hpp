@@ -80,6 +80,12 @@ class EmbeddedRungeKutta : public Stepper {
   virtual double error_norm(double h) = 0;
   // Make the last attempt the current point (accept_step) and keep what its dense output needs.
   virtual void commit(double h, double t_new) = 0;
+  // h|λ| of the last attempt, an estimate of where the step is in the stability region, and the
+  // bound of that region along the negative axis; a negative estimate: the method has none.
+  virtual double stiffness_estimate(double /*h*/) const { return -1.0; }
+  virtual double stability_bound() const { return 0.0; }
+  // Throws IntegrationError when the accepted steps are held by stability, not accuracy.
+  void watch_stiffness(double h);
 
   void restart() override;
   void before_reset_state() override;
@@ -97,6 +103,8 @@ class EmbeddedRungeKutta : public Stepper {
   Eigen::VectorXd f0_, probe_, f_probe_;
   Eigen::ArrayXd scale_;
   bool have_f0_ = false;
+  // The stiffness test's counters (Hairer's DOPRI5: IASTI, NONSTI).
+  int stiff_steps_ = 0, non_stiff_steps_ = 0;
 };
 
 }  // namespace unidyn

@@ -24,6 +24,8 @@ struct SimulationOptions {
   double step = 0.0;  // rk4's and rattle's step; 0: output_step / 10
   bool project = true;
   std::size_t max_steps = 100000000;
+  // Asked after every step (not only at rows): true ends the run there, "interrupted" (Ctrl-C).
+  std::function<bool()> interrupted;
 };
 
 // The options a model file's `simulate:` asks for (atol no larger than rtol / 100).

@@ -1,11 +1,15 @@
 // Reading a model file (YAML, the contract of DESIGN.md) into a System.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "unidyn/model/system.hpp"
 
 namespace unidyn {
+
+// The largest model file or text read (4 MiB): anything larger is refused before it is parsed.
+inline constexpr std::size_t kMaxModelBytes = 4u << 20;
 
 // Reads and checks a model file. Every mistake throws ModelError naming file:line:column and what
 // was expected. Nothing in the file is executed: expressions go through the safe parser only.

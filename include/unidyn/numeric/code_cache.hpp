@@ -48,10 +48,13 @@ class CacheLocation {
 };
 
 // A flock on <directory>/<name>.lock: exclusive while an entry is made or removed, shared while
-// one is checked and loaded. Released when this object dies.
+// one is checked and loaded. Released when this object dies. Waited for at most
+// kLockWaitSeconds (then std::runtime_error: the caller goes on without native code).
+inline constexpr double kLockWaitSeconds = 120.0;
 class EntryLock {
  public:
-  EntryLock(const std::filesystem::path& directory, const std::string& name, bool exclusive);
+  EntryLock(const std::filesystem::path& directory, const std::string& name, bool exclusive,
+            double wait_seconds = kLockWaitSeconds);
   ~EntryLock();
   EntryLock(const EntryLock&) = delete;
   EntryLock& operator=(const EntryLock&) = delete;
@@ -85,8 +88,9 @@ void remove_entry(const std::filesystem::path& directory, const std::string& nam
 void store_entry(const std::filesystem::path& directory, const std::string& name,
                  const std::filesystem::path& compiled_library);
 
-// A private directory for one compilation: mkdtemp(<parent>/build-XXXXXX), mode 0700, removed
-// with everything in it when this object dies.
+// A private directory for one compilation: mkdtemp(<parent>/build-<pid>-XXXXXX), mode 0700,
+// removed with everything in it when this object dies. Those of processes that no longer exist
+// (killed while compiling) are removed first.
 class BuildDirectory {
  public:
   explicit BuildDirectory(const std::filesystem::path& parent, const std::string& prefix = "build");

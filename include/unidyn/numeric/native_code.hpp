@@ -64,6 +64,11 @@ class NotCached : public NativeCodeError {
   using NativeCodeError::NativeCodeError;
 };
 
+// Ends every compiler this process runs (each in a process group of its own, killed whole) and
+// refuses to start another: for a signal that ends the process. Async-signal-safe. The compiling
+// thread then reaps its compiler, removes its build directory and throws NativeCodeError.
+void stop_native_compilers() noexcept;
+
 // A loaded library of compiled tapes. Immutable; its functions stay valid while it lives.
 class NativeLibrary {
  public:

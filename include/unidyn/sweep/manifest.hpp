@@ -9,6 +9,7 @@
 // as an absolute path and the SHA-256 of its bytes: a run refuses a model that changed since.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -33,6 +34,8 @@ struct SweepManifest {
   std::vector<std::string> names;
   std::uint64_t seed = 0;
   std::vector<SweepRun> runs;
+  // the runs in the file (a manifest read for a range of them holds those in `runs`)
+  std::size_t run_count = 0;
   // NAME=VALUE of an operating point (as `unidyn modes --at`): when given, each run also reports
   // the eigenvalues and stability of its linearisation there, with the run's parameters.
   std::vector<std::string> modes_at;
@@ -66,8 +69,17 @@ SweepManifest plan_sweep(const std::string& model_path, const std::string& model
 // The manifest as its file's text (numbers in their shortest exact form).
 std::string manifest_text(const SweepManifest& manifest);
 
-// A manifest file read back. Throws ModelError (file:line:column) when it is not one.
-SweepManifest read_manifest(const std::string& path);
+// The runs a manifest is read for: those numbered first to last − 1 (a task's).
+struct RunRange {
+  std::size_t first = 0;
+  std::size_t last = SIZE_MAX;
+};
+
+// A manifest file read back: its header, and its runs in `keep` (every run is checked for its
+// place and counted in run_count; only those kept are parsed and held, so a task of a 10^7-run
+// manifest needs the memory of its own runs). Throws ModelError (file:line:column) when it is
+// not one: each run is one line `  - [index, seed, values...]`, as manifest_text writes it.
+SweepManifest read_manifest(const std::string& path, RunRange keep = {});
 
 // SplitMix64 of the plan's seed and a run's index.
 std::uint64_t run_seed(std::uint64_t seed, std::size_t index);

@@ -13,6 +13,7 @@
 #include <ostream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "unidyn/sweep/manifest.hpp"
 
@@ -25,21 +26,31 @@ std::filesystem::path default_results_directory(const std::string& manifest_path
 std::filesystem::path result_path(const std::filesystem::path& directory, std::size_t index);
 
 struct ChunkReport {
-  std::size_t done = 0, skipped = 0, failed = 0;
+  // made (of them: failed runs, and results there that were not this run's and were made again),
+  // and kept
+  std::size_t done = 0, skipped = 0, failed = 0, remade = 0;
 };
 
 // Runs the manifest's runs [first, last) into `directory` (made when missing), one line per run
-// on `log`. Throws std::invalid_argument when the model file changed since the plan or a range
-// is outside the manifest.
-ChunkReport run_sweep_rows(const SweepManifest& manifest, std::size_t first, std::size_t last,
+// on `log`. Each result ends with a stamp of the manifest's SHA-256, the run's index and seed: a
+// result that is whole and made for this run is kept, anything else there (from before a re-plan,
+// copied, cut short) is made again. Throws std::invalid_argument when the model file changed
+// since the plan or a range is outside the manifest.
+ChunkReport run_sweep_rows(const SweepManifest& manifest, const std::string& manifest_sha256,
+                           std::size_t first, std::size_t last,
                            const std::filesystem::path& directory, std::ostream& log);
 
+// The runs gather_sweep left out: no result file, or one that is not this run's (stale).
+struct GatherReport {
+  std::vector<std::size_t> missing, stale;
+};
+
 // The results as one table on `out`: a comment line with the model, the manifest's SHA-256 and
-// the count of runs, the header of the result files, then their rows in the runs' order. Returns
-// the runs whose result is missing (their rows are left out).
-std::vector<std::size_t> gather_sweep(const SweepManifest& manifest,
-                                      const std::string& manifest_sha256,
-                                      const std::filesystem::path& directory, std::ostream& out);
+// the count of runs, the header of the result files, then their rows in the runs' order, the
+// missing ones left out. Nothing is written when a result is stale: a table is never made from
+// results of another manifest or run.
+GatherReport gather_sweep(const SweepManifest& manifest, const std::string& manifest_sha256,
+                          const std::filesystem::path& directory, std::ostream& out);
 
 // The rows [first, last) of task `task` when the runs are cut into chunks of `chunk` (the last one
 // shorter). Throws std::invalid_argument for a chunk of 0 or a task past the runs.
