@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "unidyn/analysis/exact_linearization.hpp"
+#include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 
@@ -131,7 +132,9 @@ std::optional<GiNaC::exmap> exact_point(const System& system, const EquationsOfM
         bool known = true;
         for (const auto& c : q) known = known && !rest.has(c.value);
         if (!constant || !known) continue;
-        at[x] = (-rest / coefficient.subs(at)).normal();
+        const Expr value = -rest / coefficient.subs(at);
+        if (!normal_affordable(value)) return std::nullopt;  // past normal()'s budget
+        at[x] = value.normal();
         unknown_q.erase(u);
         progress = true;
         break;
@@ -159,6 +162,7 @@ std::optional<GiNaC::exmap> exact_point(const System& system, const EquationsOfM
     }
     if (solution.nops() != unknown_u.size()) return std::nullopt;
     for (std::size_t k = 0; k < unknown_u.size(); ++k) {
+      if (!normal_affordable(solution.op(k).rhs())) return std::nullopt;
       const Expr value = solution.op(k).rhs().normal();
       for (const auto& c : q) {
         if (value.has(c.rate)) return std::nullopt;  // not determined by the rows

@@ -9,7 +9,7 @@ namespace unidyn {
 namespace {
 
 Expr simplified(const Expr& e) {
-  return canonical_normal(expand_within_budget(e, "the Frenet triad"));
+  return normal_within_budget(expand_within_budget(e, "the Frenet triad"), "the Frenet triad");
 }
 
 VectorExpr simplified(const VectorExpr& v) {

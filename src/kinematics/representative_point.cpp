@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "unidyn/symbolic/derivative.hpp"
+#include "unidyn/symbolic/expansion_budget.hpp"
 
 namespace unidyn {
 
@@ -38,7 +39,8 @@ RepresentativePoint representative_point(const System& system) {
   point.metric = GiNaC::matrix(size, size);
   for (unsigned J = 0; J < n; ++J) {
     for (unsigned K = 0; K < n; ++K) {
-      point.metric(J, K) = GiNaC::normal(dot(point.covariant[J], point.covariant[K]));
+      point.metric(J, K) = normal_within_budget(dot(point.covariant[J], point.covariant[K]),
+                                                "the metric of the representative point");
     }
   }
   if (n != dimension) return point;
@@ -56,7 +58,8 @@ RepresentativePoint representative_point(const System& system) {
   }
   for (unsigned J = 0; J < n; ++J) {
     PointVector a;
-    for (unsigned K = 0; K < n; ++K) a.push_back(GiNaC::normal(inverse(J, K) / point.scale[K]));
+    for (unsigned K = 0; K < n; ++K)
+      a.push_back(normal_within_budget(inverse(J, K) / point.scale[K], "the vectors a^J"));
     point.contravariant.push_back(std::move(a));
   }
   return point;

@@ -17,6 +17,7 @@
 #include "unidyn/io/integrability_text.hpp"
 #include "unidyn/io/json_text.hpp"
 #include "unidyn/io/textbook_equations.hpp"
+#include "unidyn/report/page_rows.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {
@@ -146,8 +147,10 @@ std::string groups_json(const System& system, const std::vector<std::string>& co
 std::string run_json(const System& system, const ReportRun& run) {
   std::vector<std::string> columns = run.columns;
   std::vector<std::vector<double>> values(columns.size());
-  for (const auto& row : run.rows) {
-    for (std::size_t c = 0; c < columns.size(); ++c) values[c].push_back(row[c]);
+  // the rows the page keeps: all, or a long run's envelope (report/page_rows.hpp)
+  const std::vector<std::size_t> kept = page_rows(run);
+  for (const std::size_t r : kept) {
+    for (std::size_t c = 0; c < columns.size(); ++c) values[c].push_back(run.rows[r][c]);
   }
   const auto energy = std::find(columns.begin(), columns.end(), "energy");
   if (energy != columns.end() && !run.rows.empty()) {
@@ -162,7 +165,9 @@ std::string run_json(const System& system, const ReportRun& run) {
   for (std::size_t c = 0; c < columns.size(); ++c) {
     out += (c ? ", " : "") + unidyn::quoted(columns[c]) + ": \"" + float32_base64(values[c]) + "\"";
   }
-  out += "}, \"summary\": " + unidyn::quoted(run.summary) + ", \"events\": " +
+  out += "}, \"rows\": " + std::to_string(run.rows.size()) +
+         ", \"rows_shown\": " + std::to_string(kept.size()) +
+         ", \"summary\": " + unidyn::quoted(run.summary) + ", \"events\": " +
          json_array(run.events,
                     [](const std::pair<double, std::string>& e) {
                       return "{\"t\": " + page_number(e.first) +

@@ -50,6 +50,9 @@ std::string surfaces_json(const ReportModel& model) {
 // (the uniform ellipsoid with its mass and principal moments: a² = 5 (B + C − A)/(2m) and
 // cyclically, along its principal axes in the body basis) for a body without one, each particle's
 // sphere, the box the motion stays in, and the constraints' planes and spheres.
+// Past this the scene's grid and camera (4 extents across, in 32-bit floats) would overflow.
+constexpr double kDrawableExtent = 1e30;
+
 std::string scene_json(const ReportModel& model, const ReportRun& run) {
   const System& system = model.system;
   const GiNaC::exmap values = system.parameter_values(model.parameters);
@@ -67,7 +70,9 @@ std::string scene_json(const ReportModel& model, const ReportRun& run) {
     if (x + 2 >= run.columns.size()) continue;
     for (const auto& row : run.rows) {
       const Eigen::Vector3d r(row[x], row[x + 1], row[x + 2]);
-      if (!r.allFinite()) continue;
+      // a position the page's 32-bit floats cannot draw (a run that flew off) leaves the box
+      // drawable: the page shows where the motion stays within kDrawableExtent
+      if (!r.allFinite() || r.cwiseAbs().maxCoeff() > kDrawableExtent) continue;
       low = low.cwiseMin(r);
       high = high.cwiseMax(r);
     }

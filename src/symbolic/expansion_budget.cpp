@@ -1,9 +1,11 @@
 // Bounding the size of an expansion before it is made.
 #include "unidyn/symbolic/expansion_budget.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <unordered_map>
 
 #include "unidyn/symbolic/canonical_text.hpp"
@@ -72,6 +74,113 @@ class Bound {
   // keyed by node, holding the node: the operands of a sum or product can be made on the fly
   // (c·x from a pair), and a freed node's address could come back for another
   std::unordered_map<const GiNaC::basic*, std::pair<Expr, double>> memo_;
+};
+
+// The terms of the numerator and the denominator normal() makes of each node, multiplied out
+// before any greatest common divisor cancels. A denominator is kept as its factors — each base
+// with its exponent and the terms of the base — so that fractions over the same denominator (as
+// mechanics has them: every term over m1 + m2 sin²θ) add over it once, as normal() adds them over
+// their least common multiple: n/d + n'/d' = (n d'/g + n' d/g) / (d d'/g). A product multiplies
+// numerators and adds the factors' exponents; (n/d)^k and (n/d)^−k are powers of their sums; a
+// function or a non-integer power is one term (normal() takes it for a symbol), its arguments
+// looked at too. `largest` collects the most terms of any numerator or denominator. Memoised by
+// node, as Bound.
+class FractionBound {
+ public:
+  struct Factor {
+    int exponent = 0;
+    double terms = 1;  // of the base
+  };
+  struct Fraction {
+    double numerator = 1;
+    std::map<Expr, Factor, GiNaC::ex_is_less> denominator;
+  };
+
+  Fraction operator()(const Expr& e) {
+    if (e.nops() == 0) return {};
+    const auto* node = &GiNaC::ex_to<GiNaC::basic>(e);
+    if (const auto it = memo_.find(node); it != memo_.end()) return it->second.second;
+    Fraction f;
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+      f.numerator = overall_coefficient(e).is_zero() ? 0 : 1;
+      for (const GiNaC::expair& term : expairs(e)) f = sum(f, (*this)(term.rest));
+    } else if (GiNaC::is_a<GiNaC::mul>(e)) {
+      for (const GiNaC::expair& factor : expairs(e)) {
+        const Fraction g = power(factor.rest, factor.coeff);
+        f.numerator *= g.numerator;
+        for (const auto& [base, d] : g.denominator) {
+          Factor& mine = f.denominator[base];
+          mine.exponent += d.exponent;
+          mine.terms = d.terms;
+        }
+      }
+    } else if (GiNaC::is_a<GiNaC::power>(e)) {
+      f = power(e.op(0), e.op(1));
+    } else {
+      for (std::size_t i = 0; i < e.nops(); ++i) (*this)(e.op(i));
+    }
+    if (!std::isfinite(f.numerator)) f.numerator = kInfinity;
+    largest = std::max({largest, f.numerator, terms_of(f.denominator)});
+    memo_.emplace(node, std::make_pair(e, f));
+    return f;
+  }
+
+  double largest = 1;
+
+ private:
+  using Denominator = std::map<Expr, Factor, GiNaC::ex_is_less>;
+
+  // The terms of a denominator multiplied out, or of the part of `d` that `by` lacks.
+  static double terms_of(const Denominator& d, const Denominator* by = nullptr) {
+    double terms = 1;
+    for (const auto& [base, factor] : d) {
+      int exponent = factor.exponent;
+      if (by != nullptr) {
+        if (const auto it = by->find(base); it != by->end()) exponent -= it->second.exponent;
+      }
+      if (exponent > 0 && factor.terms > 1) terms *= multinomial_terms(exponent, factor.terms);
+    }
+    return std::isfinite(terms) ? terms : kInfinity;
+  }
+
+  // a + b over the least common multiple of their denominators
+  static Fraction sum(const Fraction& a, const Fraction& b) {
+    Fraction f;
+    f.denominator = a.denominator;
+    for (const auto& [base, d] : b.denominator) {
+      Factor& mine = f.denominator[base];
+      mine.exponent = std::max(mine.exponent, d.exponent);
+      mine.terms = d.terms;
+    }
+    f.numerator = a.numerator * terms_of(f.denominator, &a.denominator) +
+                  b.numerator * terms_of(f.denominator, &b.denominator);
+    return f;
+  }
+
+  Fraction power(const Expr& base, const Expr& exponent) {
+    if (exponent.is_equal(1)) return (*this)(base);
+    const Fraction f = (*this)(base);
+    if (!GiNaC::is_exactly_a<GiNaC::numeric>(exponent) ||
+        !exponent.info(GiNaC::info_flags::integer)) {
+      (*this)(exponent);
+      return {};
+    }
+    const int k = GiNaC::ex_to<GiNaC::numeric>(exponent).to_int();
+    Fraction raised;
+    if (k > 0) {
+      raised.numerator = f.numerator > 1 ? multinomial_terms(k, f.numerator) : 1;
+      raised.denominator = f.denominator;
+      for (auto& [b, d] : raised.denominator) d.exponent *= k;
+      return raised;
+    }
+    // (n/d)^−k = d^k / n^k: the base's numerator a factor of the denominator, under its own name
+    raised.numerator = multinomial_terms(-k, terms_of(f.denominator));
+    if (!std::isfinite(raised.numerator)) raised.numerator = kInfinity;
+    raised.denominator[base] = Factor{-k, f.numerator};
+    return raised;
+  }
+
+  std::unordered_map<const GiNaC::basic*, std::pair<Expr, Fraction>> memo_;
 };
 
 // Whether base^exponent is a factor that GiNaC's expand leaves as it is: a power of a symbol, a
@@ -188,8 +297,26 @@ Expr expand_within_budget(const Expr& e, std::string_view what) {
   return CheckedExpansion{what}(e);
 }
 
+double fraction_terms_bound(const Expr& e) {
+  FractionBound bound;
+  bound(e);
+  return bound.largest;
+}
+
+bool normal_affordable(const Expr& e) {
+  return !has_denominator(e) || fraction_terms_bound(e) <= kMaxNormalTerms;
+}
+
 Expr normal_within_budget(const Expr& e, std::string_view what) {
   check_expansion_budget(e, what);
+  if (!normal_affordable(e)) {
+    char count[64];
+    std::snprintf(count, sizeof count, "%.3g", fraction_terms_bound(e));
+    throw ExpressionTooLarge(std::string(what) + ": one fraction of it would multiply out " +
+                             count + " terms, past the budget of " +
+                             std::to_string(static_cast<long>(kMaxNormalTerms)) +
+                             " for a common denominator (a power of a long sum in a denominator?)");
+  }
   return canonical_normal(e);
 }
 

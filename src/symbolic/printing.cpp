@@ -326,9 +326,12 @@ Expr simplify_uncached(const Expr& e) {
   SimplifyInside inside;
   check_expansion_budget(e, "simplifying");
   Sized best(expand_within_budget(inside(e), "simplifying"));
-  // A rational function is brought to one fraction only when that is smaller.
-  if (const Expr normal = canonical_normal(best.e); !normal.is_equal(best.e)) {
-    if (const Sized sized(normal); better(sized, best)) best = sized;
+  // A rational function is brought to one fraction only when that is smaller, and only when
+  // normal() can afford it (a large one is left a sum of fractions)
+  if (normal_affordable(best.e)) {
+    if (const Expr normal = canonical_normal(best.e); !normal.is_equal(best.e)) {
+      if (const Sized sized(normal); better(sized, best)) best = sized;
+    }
   }
   // sin²x + cos²x = 1: with s = sin x, c = cos x for each argument, numerator and denominator are
   // polynomials in the s and c; reduced modulo s² + c² − 1 in s or in c they take a unique form,
@@ -394,7 +397,11 @@ Expr simplify_uncached(const Expr& e) {
                den = reduce_modulo_unit_circles(denominator, pairs);
     // a polynomial's remainder is its own normal form, and expanded already (monomials in which
     // the symbols became sines and cosines); a fraction's, expanded, may be smaller
-    const Sized reduced((polynomial ? num : canonical_normal(num / den)).subs(back, kPlain));
+    const Expr quotient = num / den;
+    const Sized reduced((polynomial                    ? num
+                         : normal_affordable(quotient) ? canonical_normal(quotient)
+                                                       : quotient)
+                            .subs(back, kPlain));
     Sized form = reduced;
     if (!polynomial) {
       if (const Sized expanded(expand_within_budget(reduced.e, "simplifying"));

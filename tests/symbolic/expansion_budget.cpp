@@ -75,6 +75,29 @@ TEST(ExpansionBudget, BoundOfPowersOfSums) {
   EXPECT_DOUBLE_EQ(largest_power_terms(GiNaC::pow(x + y, 3) * GiNaC::pow(x + y + z, 2)), 6);
 }
 
+// normal()'s bound multiplies the denominators out: 1/(x + y + z + w + 1)^n has the C(n + 4, 4)
+// monomials of its denominator; added to x/(y + 1) (over (y + 1)(x + y + z + w + 1)^n) it bounds
+// the numerator and the denominator that GiNaC's normal makes. A fraction whose denominator is a
+// symbol or a short sum is affordable, 1/(x + y + z + w + 1)^30 not.
+TEST(ExpansionBudget, FractionBoundCountsTheDenominatorsMultipliedOut) {
+  const GiNaC::symbol x("x"), y("y"), z("z"), w("w");
+  for (int n = 1; n <= 6; ++n) {
+    const Expr e = GiNaC::pow(x + y + z + w + 1, -n);
+    EXPECT_DOUBLE_EQ(fraction_terms_bound(e), choose(n + 4, 4)) << n;
+    EXPECT_DOUBLE_EQ(expanded_terms_bound(e), 5) << n;  // expand leaves it as it is
+    const Expr sum = e + x / (y + 1);
+    const Expr normal = GiNaC::numer_denom(sum.normal());
+    EXPECT_DOUBLE_EQ(fraction_terms_bound(sum), 2 * choose(n + 4, 4)) << n;
+    EXPECT_GE(fraction_terms_bound(sum), terms(normal.op(0).expand())) << n;
+    EXPECT_GE(fraction_terms_bound(sum), terms(normal.op(1).expand())) << n;
+  }
+  EXPECT_TRUE(normal_affordable(x / (y + z) + 1 / x));
+  EXPECT_TRUE(normal_affordable(GiNaC::pow(x + y + z + w + 1, 30)));  // no denominator
+  EXPECT_FALSE(normal_affordable(GiNaC::pow(x + y + z + w + 1, -30)));
+  EXPECT_THROW(normal_within_budget(1 / (GiNaC::pow(x + y + z + w + 1, 30) + 1), "here"),
+               ExpressionTooLarge);
+}
+
 // An upper bound on every expansion of a mixed expression.
 TEST(ExpansionBudget, BoundIsAnUpperBound) {
   const GiNaC::symbol x("x"), y("y"), z("z");

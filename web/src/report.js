@@ -46,10 +46,18 @@ console.error = (...args) => {
 
 const data = JSON.parse(document.getElementById('unidyn-data').textContent);
 const run = data.run;
-// each column: little-endian 32-bit floats in base64 (report_page.cpp), NaN as a gap
+// each column: little-endian 32-bit floats in base64 (report_page.cpp); a value that is not
+// finite (NaN, an infinity, past the float's range) is a gap, counted: the plots say so
+const notFinite = {};
 for (const [name, text] of Object.entries(run.columns)) {
   const bytes = Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
-  run.columns[name] = Array.from(new Float32Array(bytes.buffer), (v) => (Number.isNaN(v) ? null : v));
+  let count = 0;
+  run.columns[name] = Array.from(new Float32Array(bytes.buffer), (v) => {
+    if (Number.isFinite(v)) return v;
+    ++count;
+    return null;
+  });
+  if (count) notFinite[name] = count;
 }
 const time = run.columns.t;
 const palette = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f0e', '#9467bd', '#8c564b', '#e377c2',
@@ -244,6 +252,11 @@ function plot(parent, title, names) {
     }))],
     hooks: { draw: [markers] },
   }, [time, ...present.map((n) => run.columns[n])], box);
+  const gaps = present.filter((n) => notFinite[n]);
+  if (gaps.length) {
+    box.append(element('p', { class: 'not-finite' }, `not finite, so not drawn: ${
+      gaps.map((n) => `${n} at ${notFinite[n]} rows`).join(', ')}`));
+  }
   // a click on a plot takes the animation to that instant
   chart.over.addEventListener('click', () => {
     if (chart.cursor.left == null || chart.cursor.left < 0) return;
@@ -254,6 +267,12 @@ function plot(parent, title, names) {
 {
   const s = sections.run;
   s.append(element('pre', {}, run.summary));
+  if (run.rows_shown < run.rows) {
+    s.append(element('p', { class: 'thinned' }, `This page shows ${run.rows_shown} of the run's ${
+      run.rows} rows: of each stretch of the run its first row and the rows where each column is `
+      + 'least and greatest (the plots keep every peak), and the rows around each event. '
+      + '`unidyn simulate` writes them all.'));
+  }
   if (run.events.length) {
     const list = element('ul', { class: 'events' });
     for (const e of run.events) list.append(element('li', {}, `t = ${e.t}: ${e.what}`));
@@ -309,8 +328,15 @@ function drawPortrait(portrait, index) {
   const { canvas, x, y } = portrait;
   const ctx = canvas.getContext('2d');
   const w = canvas.width, h = canvas.height, pad = 12;
+  // the finite values' range (a loop: spreading 10^5 values into Math.min overflows the stack)
   const range = (v) => {
-    let lo = Math.min(...v), hi = Math.max(...v);
+    let lo = Infinity, hi = -Infinity;
+    for (const x of v) {
+      if (x === null) continue;
+      lo = Math.min(lo, x);
+      hi = Math.max(hi, x);
+    }
+    if (!(hi >= lo)) { lo = 0; hi = 0; }
     if (hi - lo < 1e-12) { lo -= 1; hi += 1; }
     return [lo, hi];
   };
@@ -323,8 +349,18 @@ function drawPortrait(portrait, index) {
   ctx.fillRect(0, 0, w, h);
   ctx.strokeStyle = palette[0];
   ctx.beginPath();
-  for (let k = 0; k < x.length; ++k) (k ? ctx.lineTo : ctx.moveTo).call(ctx, px(x[k]), py(y[k]));
+  // a value that is not finite breaks the line there
+  let drawing = false;
+  for (let k = 0; k < x.length; ++k) {
+    if (x[k] === null || y[k] === null) {
+      drawing = false;
+      continue;
+    }
+    (drawing ? ctx.lineTo : ctx.moveTo).call(ctx, px(x[k]), py(y[k]));
+    drawing = true;
+  }
   ctx.stroke();
+  if (x[index] === null || y[index] === null) return;
   ctx.fillStyle = '#000';
   ctx.beginPath();
   ctx.arc(px(x[index]), py(y[index]), 4, 0, 2 * Math.PI);

@@ -42,8 +42,22 @@ bool is_expanded(const Expr& e);
 // is GiNaC's expand(); otherwise the expansion is made one checked product at a time.
 Expr expand_within_budget(const Expr& e, std::string_view what);
 
+// The most terms GiNaC's normal() may be given to multiply out when it brings an expression to one
+// fraction. Its greatest common divisors cost far more than the terms themselves (a 50-character
+// potential 1/((x+y+m+2)^10-(x-y+g)^10+1) took 34 s to print), so this budget is smaller than
+// kMaxExpandedTerms.
+inline constexpr double kMaxNormalTerms = 1e4;
+
+// An upper bound on the terms of the numerators and denominators normal(e) multiplies out on its
+// way to one fraction (before greatest common divisors cancel anything): fractions added over the
+// product of their denominators, powers of sums expanded.
+double fraction_terms_bound(const Expr& e);
+
+// Whether e has no denominator, or normal(e) is within kMaxNormalTerms.
+bool normal_affordable(const Expr& e);
+
 // GiNaC::normal(e) (one fraction, whose numerator and denominator are expanded), or
-// ExpressionTooLarge as expand_within_budget.
+// ExpressionTooLarge as expand_within_budget, or when it is not normal_affordable.
 Expr normal_within_budget(const Expr& e, std::string_view what);
 
 // Throws ExpressionTooLarge when expanding e would (as expand_within_budget).
