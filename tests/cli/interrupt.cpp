@@ -148,19 +148,34 @@ TEST(Interrupt, SigtermKeepsWholeRowsAndTheSummary) {
   std::remove(summary.c_str());
 }
 
-// A cache directory of its own (UNIDYN_CACHE_DIR for the commands this test spawns, restored
-// after): the native code is compiled, not found.
-class PrivateCache {
+// An environment variable of this process (so of the commands it spawns) set while this lives,
+// restored after.
+class ScopedVariable {
  public:
-  PrivateCache() : path_(temp_path("cache")) {
-    std::filesystem::create_directories(path_);
-    const char* before = std::getenv("UNIDYN_CACHE_DIR");
+  ScopedVariable(const char* name, const std::string& value) : name_(name) {
+    const char* before = std::getenv(name);
     had_ = before != nullptr;
     if (had_) before_ = before;
-    ::setenv("UNIDYN_CACHE_DIR", path_.c_str(), 1);
+    ::setenv(name, value.c_str(), 1);
+  }
+  ~ScopedVariable() { had_ ? ::setenv(name_, before_.c_str(), 1) : ::unsetenv(name_); }
+  ScopedVariable(const ScopedVariable&) = delete;
+  ScopedVariable& operator=(const ScopedVariable&) = delete;
+
+ private:
+  const char* name_;
+  std::string before_;
+  bool had_ = false;
+};
+
+// A cache directory of its own (UNIDYN_CACHE_DIR for the commands this test spawns): the native
+// code is compiled, not found.
+class PrivateCache {
+ public:
+  PrivateCache() : path_(temp_path("cache")), variable_("UNIDYN_CACHE_DIR", path_) {
+    std::filesystem::create_directories(path_);
   }
   ~PrivateCache() {
-    had_ ? ::setenv("UNIDYN_CACHE_DIR", before_.c_str(), 1) : ::unsetenv("UNIDYN_CACHE_DIR");
     std::error_code error;
     std::filesystem::remove_all(path_, error);
   }
@@ -176,30 +191,23 @@ class PrivateCache {
   }
 
  private:
-  std::string path_, before_;
-  bool had_ = false;
+  std::string path_;
+  ScopedVariable variable_;
 };
 
-// $CXX a compiler that takes a minute (sleep 60, then c++) while this lives, restored after: the
-// signal comes while it compiles.
+// $CXX a compiler that takes a minute (sleep 60, then c++) while this lives: the signal comes
+// while it compiles.
 class SlowCompiler {
  public:
-  SlowCompiler() : path_(temp_path("slow-c++")) {
+  SlowCompiler() : path_(temp_path("slow-c++")), variable_("CXX", path_) {
     write_file(path_, "#!/bin/sh\nsleep 60\nexec c++ \"$@\"\n");
     std::filesystem::permissions(path_, std::filesystem::perms::owner_all);
-    const char* before = std::getenv("CXX");
-    had_ = before != nullptr;
-    if (had_) before_ = before;
-    ::setenv("CXX", path_.c_str(), 1);
   }
-  ~SlowCompiler() {
-    had_ ? ::setenv("CXX", before_.c_str(), 1) : ::unsetenv("CXX");
-    std::remove(path_.c_str());
-  }
+  ~SlowCompiler() { std::remove(path_.c_str()); }
 
  private:
-  std::string path_, before_;
-  bool had_ = false;
+  std::string path_;
+  ScopedVariable variable_;
 };
 
 // The processes whose command line names `text` (a compiler writing into the cache).
