@@ -4,6 +4,7 @@
 #include <csignal>
 #include <iterator>
 
+#include "unidyn/io/atomic_file.hpp"
 #include "unidyn/numeric/native_code.hpp"
 
 namespace unidyn::cli {
@@ -12,9 +13,11 @@ namespace {
 constexpr int kEndingSignals[] = {SIGINT, SIGTERM, SIGHUP};
 volatile std::sig_atomic_t g_interrupted = 0;
 
-// Outside a simulation: the compilers stopped, then the signal's default action.
+// Outside a simulation: the compilers stopped and the files being written removed (their old
+// versions stay), then the signal's default action.
 extern "C" void on_ending_signal(int signal) {
   stop_native_compilers();
+  remove_unfinished_files();
   std::signal(signal, SIG_DFL);
   std::raise(signal);
 }

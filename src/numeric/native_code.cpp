@@ -5,10 +5,13 @@
 #include "unidyn/numeric/shell_quoting.hpp"
 
 #include <dlfcn.h>
+#include <pthread.h>
+#include <signal.h>
 #include <spawn.h>
 #include <stdlib.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -151,6 +154,10 @@ void* load_checked(const CacheEntry& entry, const Identity& expected) {
 std::atomic<pid_t> g_compilers[16];
 static_assert(std::atomic<pid_t>::is_always_lock_free);
 std::atomic<bool> g_compilers_stopped{false};
+// Compilers spawned and not yet in a slot: a stop waits for them (a process ended by the signal
+// between the spawn and the slot would leave its compiler running for nobody).
+std::atomic<int> g_compilers_starting{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 
 // One compiler's process group in a free slot while it runs (none free: it cannot be stopped
 // early, and is waited for as before).
@@ -182,18 +189,38 @@ class RunningCompiler {
 // std::system: that ignores SIGINT in the whole process while the command runs, and the compiler
 // may run in a thread of its own while a simulation, which Ctrl-C must still stop, goes on.
 int run_shell(const std::string& command) {
-  if (g_compilers_stopped.load()) return -2;
+  // From the spawn to the slot: the ending signals are held in this thread (a handler run here
+  // would wait for this very thread), and one taken by another thread waits for the slot.
+  sigset_t ending, previous;
+  sigemptyset(&ending);
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&ending, signal);
+  ::pthread_sigmask(SIG_BLOCK, &ending, &previous);
+  ++g_compilers_starting;
+  const auto started = [&] {
+    --g_compilers_starting;
+    ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+  };
+  if (g_compilers_stopped.load()) {
+    started();
+    return -2;
+  }
   const char* arguments[] = {"sh", "-c", command.c_str(), nullptr};
   posix_spawnattr_t attributes;
   ::posix_spawnattr_init(&attributes);
   ::posix_spawnattr_setpgroup(&attributes, 0);
-  ::posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  // the compiler with the signal mask this process had, not the one held here
+  ::posix_spawnattr_setsigmask(&attributes, &previous);
+  ::posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK);
   pid_t child = 0;
   const int error = ::posix_spawn(&child, "/bin/sh", nullptr, &attributes,
                                   const_cast<char* const*>(arguments), environ);
   ::posix_spawnattr_destroy(&attributes);
-  if (error != 0) return -1;
+  if (error != 0) {
+    started();
+    return -1;
+  }
   const RunningCompiler running(child);
+  started();
   int status = 0;
   while (::waitpid(child, &status, 0) < 0) {
     if (errno != EINTR) return -1;
@@ -361,6 +388,10 @@ void stop_native_compilers() noexcept {
   for (auto& slot : g_compilers) {
     if (const pid_t group = slot.load(); group > 0) ::kill(-group, SIGKILL);
   }
+  // a compiler being spawned by another thread: it sees the stop when it takes its slot (at most
+  // ~2 s waited for, in steps of 1 ms: nanosleep is async-signal-safe)
+  const timespec step{0, 1'000'000};
+  for (int k = 0; k < 2000 && g_compilers_starting.load() > 0; ++k) ::nanosleep(&step, nullptr);
 }
 
 NativeLibrary::~NativeLibrary() {

@@ -12,6 +12,11 @@ namespace {
 const std::string kBicycleAt = " --at 'der(thR)=v/rR' 'der(phi)=0' 'der(delta)=0' 'der(psi)=0'";
 
 TEST(AnalysisCommands, SameOutputOnEveryRun) {
+#ifdef UNIDYN_SANITIZED
+  // the same bytes on every run is the plain build's to check (44 s here): the sanitizers see
+  // each of these commands once in the other tests
+  GTEST_SKIP() << "checked in the plain build";
+#endif
   for (const std::string& command : std::vector<std::string>{
            "linearize double-pendulum --at theta1=0 theta2=0", "modes bicycle" + kBicycleAt,
            "modes spring-chain --at x1=0 x2=0 --format json",
