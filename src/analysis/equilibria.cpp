@@ -12,6 +12,7 @@
 #include "steady_balance.hpp"
 #include "tape_derivatives.hpp"
 #include "unidyn/analysis/time_dependence.hpp"
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 
 namespace unidyn {
@@ -90,7 +91,7 @@ Tape momentum_tape(const System& system, const std::vector<Index>& cyclic) {
   const Expr T = system.kinetic_energy();
   std::vector<GiNaC::ex> momenta;
   for (const Index i : cyclic) {
-    momenta.push_back(T.diff(system.coordinates()[static_cast<std::size_t>(i)].rate));
+    momenta.push_back(derivative(T, system.coordinates()[static_cast<std::size_t>(i)].rate));
   }
   return Tape::compile(momenta, tape_inputs(system, false));
 }

@@ -1,6 +1,7 @@
 // M, C and K in closed form at an exact operating point.
 #include "unidyn/analysis/exact_linearization.hpp"
 
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn {
@@ -31,12 +32,17 @@ std::optional<ExactSecondOrder> exact_second_order(const System& system,
   const auto& q = system.coordinates();
   const std::size_t n = q.size();
   ExactSecondOrder out{ExprMatrix(n, n), ExprMatrix(n, n), ExprMatrix(n, n)};
+  // C = −∂F/∂q̇ and K = −∂F/∂q, each row in one walk through F_i (rates first, then values)
+  std::vector<Expr> directions;
+  for (const auto& c : q) directions.push_back(c.rate);
+  for (const auto& c : q) directions.push_back(c.value);
   std::vector<Expr> entries;
   for (std::size_t i = 0; i < n; ++i) {
+    const std::vector<Expr> dF = gradient(equations.forcing[i], directions);
     for (std::size_t j = 0; j < n; ++j) {
       entries.push_back(equations.mass_matrix(i, j).subs(point));
-      entries.push_back(-equations.forcing[i].diff(q[j].rate).subs(point));
-      entries.push_back(-equations.forcing[i].diff(q[j].value).subs(point));
+      entries.push_back(-dF[j].subs(point));
+      entries.push_back(-dF[n + j].subs(point));
     }
   }
   const std::vector<Expr> simplified = simplify_all(entries);

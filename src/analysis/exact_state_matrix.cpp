@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "unidyn/analysis/exact_linearization.hpp"
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/real_value.hpp"
@@ -124,7 +125,7 @@ std::optional<GiNaC::exmap> exact_point(const System& system, const EquationsOfM
       if (psi.is_zero() || !point.active[k]) continue;
       for (auto u = unknown_q.begin(); u != unknown_q.end(); ++u) {
         const GiNaC::symbol& x = q[*u].value;
-        const Expr coefficient = psi.diff(x).expand();
+        const Expr coefficient = derivative(psi, x).expand();
         bool constant = !coefficient.is_zero();
         for (const auto& c : q) constant = constant && !coefficient.has(c.value);
         // the rest of Ψ known already: all its other coordinates are in `at`
@@ -236,18 +237,18 @@ std::optional<ExprMatrix> exact_state_matrix(const System& system, const Equatio
     // (a reference to the coordinate's own symbol: through an ex it would be a temporary's)
     const GiNaC::symbol& x = d < n ? q[d].value : q[d - n].rate;
     for (std::size_t i = 0; i < n; ++i) {
-      Expr balance = -eq.forcing[i].diff(x);
-      for (std::size_t j = 0; j < n; ++j) balance += eq.mass_matrix(i, j).diff(x) * qddot(j);
-      for (std::size_t k = 0; k < r; ++k) balance -= A_of(k, i).diff(x) * lambda(k);
+      Expr balance = -derivative(eq.forcing[i], x);
+      for (std::size_t j = 0; j < n; ++j) balance += derivative(eq.mass_matrix(i, j), x) * qddot(j);
+      for (std::size_t k = 0; k < r; ++k) balance -= derivative(A_of(k, i), x) * lambda(k);
       right(static_cast<unsigned>(i), static_cast<unsigned>(d)) = balance.subs(at);
     }
     for (std::size_t k = 0; k < r; ++k) {
-      Expr acceleration = eq.constraint_bias[active[k]].diff(x);
-      for (std::size_t j = 0; j < n; ++j) acceleration += A_of(k, j).diff(x) * qddot(j);
+      Expr acceleration = derivative(eq.constraint_bias[active[k]], x);
+      for (std::size_t j = 0; j < n; ++j) acceleration += derivative(A_of(k, j), x) * qddot(j);
       right(static_cast<unsigned>(n + k), static_cast<unsigned>(d)) = acceleration.subs(at);
       if (d >= n) continue;
-      Expr velocity = eq.constraint_velocity_term[active[k]].diff(x);
-      for (std::size_t j = 0; j < n; ++j) velocity += A_of(k, j).diff(x) * q[j].rate;
+      Expr velocity = derivative(eq.constraint_velocity_term[active[k]], x);
+      for (std::size_t j = 0; j < n; ++j) velocity += derivative(A_of(k, j), x) * q[j].rate;
       G(static_cast<unsigned>(k), static_cast<unsigned>(d)) = velocity.subs(at);
     }
   }

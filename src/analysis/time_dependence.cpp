@@ -8,6 +8,7 @@
 #include <random>
 
 #include "unidyn/numeric/number_text.hpp"
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/real_value.hpp"
 #include "unidyn/symbolic/zero_test.hpp"
@@ -148,7 +149,7 @@ TimeDependence time_dependence(const System& system, const EquationsOfMotion& eq
   TimeDependence out;
   const GiNaC::realsymbol& t = system.time();
   for (const Entry& entry : entries(system, eq)) {
-    if (!entry.value.has(t) || identically_zero(entry.value.diff(t))) continue;
+    if (!entry.value.has(t) || identically_zero(derivative(entry.value, t))) continue;
     out.depends = true;
     std::string elsewhere;
     collect(entry.value, entry.value, system, out.frequencies, elsewhere);

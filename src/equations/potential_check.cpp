@@ -2,6 +2,7 @@
 #include "unidyn/equations/potential_check.hpp"
 
 #include "unidyn/equations/lagrange.hpp"
+#include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn {
@@ -61,8 +62,8 @@ PotentialCheck potential_check(const System& system, std::size_t element) {
   // (2.5): the curl of Φ in the coordinates vanishes
   for (std::size_t i = 0; i < phi.size(); ++i) {
     for (std::size_t j = i + 1; j < phi.size(); ++j) {
-      const Expr curl =
-          simplify(phi[i].diff(coordinates[j].value) - phi[j].diff(coordinates[i].value));
+      const Expr curl = simplify(derivative(phi[i], coordinates[j].value) -
+                                 derivative(phi[j], coordinates[i].value));
       if (curl.is_zero()) continue;
       check.witness = "dPhi_" + coordinates[i].name + "/d" + coordinates[j].name + " - dPhi_" +
                       coordinates[j].name + "/d" + coordinates[i].name;
