@@ -1,9 +1,7 @@
 // `unidyn sweep`: plan a sweep, run chunks of it, gather the results, write a launcher.
 #include "sweep_command.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <charconv>
 #include <cstdint>
@@ -16,7 +14,6 @@
 #include "unidyn/analysis/operating_point.hpp"
 #include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/io/model_file.hpp"
-#include "unidyn/numeric/digest.hpp"
 #include "unidyn/sweep/manifest.hpp"
 #include "unidyn/sweep/sweep_run.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
@@ -87,20 +84,6 @@ int run_plan(const SweepCommand& c) {
   return 0;
 }
 
-// The SHA-256 of a manifest's bytes, read in blocks (a manifest can be hundreds of MB).
-std::string manifest_sha256(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw std::invalid_argument("cannot read the manifest " + path);
-  try {
-    const std::string digest = sha256_of_descriptor(fd).sha256;
-    ::close(fd);
-    return digest;
-  } catch (...) {
-    ::close(fd);
-    throw;
-  }
-}
-
 int run_chunk(const SweepCommand& c) {
   if (!c.rows.empty() && c.chunk > 0) throw std::invalid_argument("give --rows or --chunk/--task");
   // only the task's runs are read and held; the range is checked against the count read
@@ -116,7 +99,7 @@ int run_chunk(const SweepCommand& c) {
                   : std::pair{wanted_first, wanted_last == all ? manifest.run_count : wanted_last};
   const fs::path directory = results_directory(c);
   const ChunkReport report =
-      run_sweep_rows(manifest, manifest_sha256(c.model), first, last, directory, std::cout);
+      run_sweep_rows(manifest, manifest.sha256, first, last, directory, std::cout);
   fmt::print(
       "runs {} to {}: {} made ({} of them failed, {} made again over a stale result), {} "
       "already done, in {}\n",
@@ -129,7 +112,7 @@ int run_gather(const SweepCommand& c) {
   const SweepManifest manifest = read_manifest(c.model);
   const fs::path directory = results_directory(c);
   std::ostringstream table;
-  const GatherReport report = gather_sweep(manifest, manifest_sha256(c.model), directory, table);
+  const GatherReport report = gather_sweep(manifest, manifest.sha256, directory, table);
   // at most ten run numbers, then "..."
   const auto some = [](const std::vector<std::size_t>& runs) {
     const std::vector<std::size_t> shown(

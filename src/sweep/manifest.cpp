@@ -4,9 +4,13 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <unistd.h>
+
 #include <charconv>
 #include <cmath>
-#include <fstream>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <random>
@@ -243,6 +247,27 @@ std::optional<Integer> whole_number(std::string_view text) {
   return value;
 }
 
+// The lines of an open file, one at a time without its '\n' (getline(3): any length).
+class LineReader {
+ public:
+  explicit LineReader(std::FILE* file) : file_(file) {}
+  ~LineReader() { std::free(buffer_); }
+  LineReader(const LineReader&) = delete;
+  LineReader& operator=(const LineReader&) = delete;
+  bool next(std::string& line) {
+    const ssize_t length = ::getline(&buffer_, &capacity_, file_);
+    if (length < 0) return false;
+    line.assign(buffer_, static_cast<std::size_t>(length));
+    if (!line.empty() && line.back() == '\n') line.pop_back();
+    return true;
+  }
+
+ private:
+  std::FILE* file_;
+  char* buffer_ = nullptr;
+  std::size_t capacity_ = 0;
+};
+
 // One run from its line's fields, or nothing when a field is not a number.
 std::optional<SweepRun> run_of(const std::vector<std::string_view>& fields) {
   SweepRun run;
@@ -262,13 +287,21 @@ std::optional<SweepRun> run_of(const std::vector<std::string_view>& fields) {
 }  // namespace
 
 SweepManifest read_manifest(const std::string& path, RunRange keep) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::invalid_argument("cannot read the manifest " + path);
+  // digested, then read from the start, through one open file (a manifest replaced meanwhile is
+  // another file)
+  std::FILE* file = std::fopen(path.c_str(), "rbe");
+  if (file == nullptr) throw std::invalid_argument("cannot read the manifest " + path);
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> closing(file, &std::fclose);
   SweepManifest m;
+  m.sha256 = sha256_of_descriptor(::fileno(file)).sha256;
+  if (::lseek(::fileno(file), 0, SEEK_SET) != 0) {
+    throw std::invalid_argument("cannot read the manifest " + path);
+  }
+  LineReader in(file);
   std::string header, line;
   int number = 0;
   bool runs = false;
-  while (!runs && std::getline(in, line)) {
+  while (!runs && in.next(line)) {
     ++number;
     runs = line == "runs:";
     if (!runs) header += line + "\n";
@@ -277,7 +310,7 @@ SweepManifest read_manifest(const std::string& path, RunRange keep) {
   if (!runs) throw ModelError({path, number, 1}, "not a sweep manifest (runs: expected)");
   // the runs one line each, streamed: only those kept are held (a task of a 10^7-run manifest)
   const std::string expected = fmt::format("a run is [index, seed, {} values]", m.names.size());
-  while (std::getline(in, line)) {
+  while (in.next(line)) {
     ++number;
     const bool kept = m.run_count >= keep.first && m.run_count < keep.last;
     const auto fields = run_fields(line, kept);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -101,6 +102,22 @@ TEST(SweepManifest, ReadBackBitForBit) {
     EXPECT_EQ(e.where().line, 9);
     EXPECT_NE(std::string(e.what()).find("a run is [index, seed, 1 values]"), std::string::npos);
   }
+  std::filesystem::remove(path);
+}
+
+// The digest a manifest is read with is its file's SHA-256 (as coreutils' sha256sum gives it),
+// for a range of runs as for all of them.
+TEST(SweepManifest, ReadWithTheDigestOfItsBytes) {
+  const SweepManifest m = plan({"theta=0.1:1.3:7"}, {}, 1, 7);
+  const std::string path = testing::TempDir() + "manifest_digest.yaml";
+  std::ofstream(path) << manifest_text(m);
+  std::string sha256sum(64, ' ');
+  std::FILE* tool = ::popen(("sha256sum '" + path + "'").c_str(), "r");
+  ASSERT_NE(tool, nullptr);
+  ASSERT_EQ(std::fread(sha256sum.data(), 1, 64, tool), 64u);
+  ::pclose(tool);
+  EXPECT_EQ(read_manifest(path).sha256, sha256sum);
+  EXPECT_EQ(read_manifest(path, {2, 3}).sha256, sha256sum);
   std::filesystem::remove(path);
 }
 

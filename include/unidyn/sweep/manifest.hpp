@@ -39,6 +39,9 @@ struct SweepManifest {
   // NAME=VALUE of an operating point (as `unidyn modes --at`): when given, each run also reports
   // the eigenvalues and stability of its linearisation there, with the run's parameters.
   std::vector<std::string> modes_at;
+  // read_manifest: the SHA-256 of the file's bytes it read (one open file for both, so the runs
+  // and the digest their results are stamped with cannot come from two versions of the file)
+  std::string sha256;
 };
 
 // NAME=FROM:TO:COUNT: COUNT values evenly from FROM to TO (both included; COUNT 1: FROM).
