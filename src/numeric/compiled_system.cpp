@@ -248,7 +248,10 @@ bool CompiledSystem::compile_in_background(const NativeOptions& native_options) 
 std::string CompiledSystem::evaluation() const {
   if (!background_) return evaluation_;
   if (background_->state.load(std::memory_order_acquire) == BackgroundCompilation::compiling) {
-    return "tape (the native code was still compiling in the background when asked)";
+    // the process waits for it at its end (~BackgroundCompilation): said here, not left to look
+    // like a hang after the summary
+    return "tape (the native code was still compiling in the background when asked; the command "
+           "ends when it is compiled, for the next run: Ctrl-C does not wait)";
   }
   return background_->evaluation;
 }
