@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "unidyn/io/model_file.hpp"
+#include "unidyn/io/phase_timings.hpp"
 
 #ifndef UNIDYN_MODELS_DIR
 #define UNIDYN_MODELS_DIR "models"
@@ -98,6 +99,7 @@ CommandModel read_command_model(const std::string& argument) {
   const std::string path = resolve_model(argument);
   std::string text = read_model_text(path);
   System system = parse_model(text, path);
+  end_phase("read model");
   return {std::move(system), std::move(text), path};
 }
 

@@ -13,6 +13,7 @@
 #include "analysis_commands.hpp"
 #include "fixed_layout.hpp"
 #include "model_commands.hpp"
+#include "progress_notices.hpp"
 #include "rotation_command.hpp"
 #include "sanitizers.hpp"
 #include "signals.hpp"
@@ -69,12 +70,17 @@ int main(int argc, char** argv) {
   }
 
   try {
-    int status =
-        rotation.rotation->parsed() ? unidyn::cli::run_rotation_command(rotation)
-        : sweep.sweep->parsed()     ? unidyn::cli::run_sweep_command(sweep)
-        : analysis.linearize->parsed() || analysis.modes->parsed() || analysis.equilibria->parsed()
-            ? unidyn::cli::run_analysis_commands(analysis)
-            : unidyn::cli::run_model_commands(models);
+    int status = 0;
+    {
+      // "still working" on a terminal while a long command runs
+      const unidyn::cli::ProgressNotices notices;
+      status = rotation.rotation->parsed() ? unidyn::cli::run_rotation_command(rotation)
+               : sweep.sweep->parsed()     ? unidyn::cli::run_sweep_command(sweep)
+               : analysis.linearize->parsed() || analysis.modes->parsed() ||
+                       analysis.equilibria->parsed()
+                   ? unidyn::cli::run_analysis_commands(analysis)
+                   : unidyn::cli::run_model_commands(models);
+    }
     if (status < 0) status = 2;
     // what could not be written to standard output (a full disk, /dev/full) is a failure
     if (std::fflush(stdout) != 0 || std::ferror(stdout)) {

@@ -461,7 +461,6 @@ int run_model_commands(const ModelCommands& c) {
   }
   if (c.timings) start_phase_timings();
   const CommandModel model = read_command_model(c.model);
-  end_phase("read model");
   // the timings on standard error however the command ends
   struct Report {
     ~Report() { fmt::print(stderr, "{}", phase_timings_report()); }

@@ -11,6 +11,7 @@
 #include "unidyn/equations/reduction.hpp"
 #include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/io/model_file.hpp"
+#include "unidyn/io/phase_timings.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
@@ -66,7 +67,11 @@ CompiledSystem command_compiled(const ModelCommands& c, const CommandModel& mode
       std::string(c.reduced ? "reduced\n" : "full\n") + model_code_text(model.text, model.path);
   // the numerics take M and f through partial velocities: the same equations as Lagrange's
   // (tested on every bundled model), derived faster and with fewer operations
-  return CompiledSystem(system, kane_equations(system), compile_options);
+  const EquationsOfMotion equations = kane_equations(system);
+  end_phase("derive (kane)");
+  CompiledSystem compiled(system, equations, compile_options);
+  end_phase("build the evaluation");
+  return compiled;
 }
 
 SimulationOptions options_for(const System& system, const ModelCommands& c) {

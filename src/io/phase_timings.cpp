@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 #include <chrono>
+#include <mutex>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -23,6 +24,18 @@ std::optional<Recording>& recording() {
   return r;
 }
 
+// The name of the last phase ended, for a watcher in another thread (never destroyed: a thread
+// may still read it while the process exits).
+struct LastPhase {
+  std::mutex mutex;
+  std::string name;
+};
+
+LastPhase& last_phase() {
+  static LastPhase* last = new LastPhase;
+  return *last;
+}
+
 }  // namespace
 
 void start_phase_timings() {
@@ -31,11 +44,22 @@ void start_phase_timings() {
 }
 
 void end_phase(std::string_view phase) {
+  {
+    LastPhase& last = last_phase();
+    const std::lock_guard lock(last.mutex);
+    last.name = phase;
+  }
   auto& r = recording();
   if (!r) return;
   const Clock::time_point now = Clock::now();
   r->phases.emplace_back(std::string(phase), std::chrono::duration<double>(now - r->last).count());
   r->last = now;
+}
+
+std::string last_phase_ended() {
+  LastPhase& last = last_phase();
+  const std::lock_guard lock(last.mutex);
+  return last.name;
 }
 
 std::string phase_timings_report() {
