@@ -3,7 +3,9 @@
 
 Every model file, source path and test the index names must exist (a test as `Suite.Name` after
 its file: the file must define TEST(Suite, Name), TEST_F, TEST_P or TYPED_TEST); every validated
-row names at least one test; every other row says why; the summary's counts are the rows' counts, and the README quotes the totals.
+row names at least one test and its oracle, and its evidence does not admit that a part of the
+result is not checked ("not run", "not compared", ...: that row is partial); every other row says
+why; the summary's counts are the rows' counts, and the README quotes the totals.
 Usage: book_index.py REPOSITORY_ROOT
 """
 import collections
@@ -11,7 +13,9 @@ import pathlib
 import re
 import sys
 
-STATUSES = ("validated", "modelled", "expressible", "not expressible")
+STATUSES = ("validated", "partial", "modelled", "expressible", "not expressible")
+# what a validated row's evidence may not say of a part of the book's result
+UNCHECKED = re.compile(r"\bnot (?:run|used|compared|tested|computed|checked|modelled)\b")
 PATH = re.compile(r"\b((?:models|tests|include|src|docs)/[\w./-]+\.(?:yaml|cpp|hpp|py|md))")
 TEST_NAME = re.compile(r"`([A-Z]\w*)\.([A-Z]\w*)`")
 
@@ -29,7 +33,7 @@ def rows_of(text):
 
 
 def summary_of(text):
-    """The summary table: chapter → [items, validated, modelled, expressible, not expressible]."""
+    """The summary table: chapter → [items, and the count of each status]."""
     table = {}
     inside = False
     for line in text.splitlines():
@@ -58,10 +62,10 @@ def main(root):
     counts = collections.defaultdict(collections.Counter)
     sources = {}
     for section, cells in rows_of(text):
-        if len(cells) != 5:
-            errors.append(f"{section}: a row without 5 cells: {cells[:1]}")
+        if len(cells) != 6:
+            errors.append(f"{section}: a row without 6 cells: {cells[:1]}")
             continue
-        item, status, evidence = cells[0], cells[3].split(" (")[0], cells[4]
+        item, status, oracle, evidence = cells[0], cells[3].split(" (")[0], cells[4], cells[5]
         if status not in STATUSES:
             errors.append(f"{section} {item}: unknown status '{cells[3]}'")
             continue
@@ -79,6 +83,13 @@ def main(root):
                 errors.append(f"{section} {item}: {path} has no test {suite}.{name}")
         if status == "validated" and not named:
             errors.append(f"{section} {item}: validated, but names no test")
+        if status == "validated" and (not oracle or oracle.startswith("none")):
+            errors.append(f"{section} {item}: validated, but names no oracle")
+        if status == "validated" and UNCHECKED.search(evidence):
+            errors.append(f"{section} {item}: validated, but its evidence says a part is "
+                          f"'{UNCHECKED.search(evidence).group(0)}': partial")
+        if status == "partial" and not named:
+            errors.append(f"{section} {item}: partial, but names no test of the part it checks")
         if status != "validated" and len(evidence) < 8:
             errors.append(f"{section} {item}: {status}, but does not say why")
     summary = summary_of(text)
@@ -94,13 +105,15 @@ def main(root):
     if len(summary) != len(counts) + 1:
         errors.append(f"the summary has {len(summary) - 1} chapters, the index {len(counts)}")
     # the README quotes the totals
-    quoted = re.search(r"\((\d+) items, (\d+) validated\)", (root / "README.md").read_text())
-    if not quoted or [int(quoted.group(1)), int(quoted.group(2))] != all_row[:2]:
-        errors.append(f"README.md must say ({all_row[0]} items, {all_row[1]} validated)")
+    quoted = re.search(r"\((\d+) items: (\d+) validated, (\d+) partial\)",
+                       (root / "README.md").read_text())
+    if not quoted or [int(g) for g in quoted.groups()] != all_row[:3]:
+        errors.append(f"README.md must say ({all_row[0]} items: {all_row[1]} validated, "
+                      f"{all_row[2]} partial)")
     for e in errors:
         print(e)
-    print(f"{all_row[0]} items, {all_row[1]} validated, {all_row[2]} modelled, "
-          f"{all_row[3]} expressible, {all_row[4]} not expressible; {len(errors)} errors")
+    print(f"{all_row[0]} items, " + ", ".join(f"{n} {s}" for n, s in zip(all_row[1:], STATUSES)) +
+          f"; {len(errors)} errors")
     return 1 if errors else 0
 
 
