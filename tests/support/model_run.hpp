@@ -40,6 +40,10 @@ struct ModelRun {
   }
   // The value of a column in a row.
   double at(std::size_t row, const std::string& column) const { return rows[row][index(column)]; }
+  // The model's value of a parameter (as the file gives it).
+  double parameter(const std::string& name) const {
+    return system.parameters.at(system.find_parameter(name).value()).value;
+  }
   std::vector<double> column(const std::string& name) const {
     std::vector<double> values;
     for (const auto& r : rows) values.push_back(r[index(name)]);
