@@ -37,6 +37,24 @@ TEST(Curvilinear, SphericalMetricAndDualBasis) {
                        1 / pow(s.R * sin(s.phi), 2)));
 }
 
+// Ex. 1.4, the vectors themselves: a₁ = e_R, a₂ = R e_φ, a₃ = R sin φ e_θ and a^3 = e_θ/(R sin φ),
+// with e_R, e_φ, e_θ typed from the book (φ from E3, θ about E3).
+TEST(Curvilinear, SphericalBasesAreTheBooksOfExercise14) {
+  const Spherical s;
+  const CurvilinearCoordinates c = curvilinear_coordinates(s.r, s.q);
+  const VectorExpr e_R{sin(s.phi) * cos(s.theta), sin(s.phi) * sin(s.theta), cos(s.phi)};
+  const VectorExpr e_phi{cos(s.phi) * cos(s.theta), cos(s.phi) * sin(s.theta), -sin(s.phi)};
+  const VectorExpr e_theta{-sin(s.theta), cos(s.theta), 0};
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_TRUE(vanishes(c.covariant_basis[0][k] - e_R[k])) << "a_1, component " << k;
+    EXPECT_TRUE(vanishes(c.covariant_basis[1][k] - s.R * e_phi[k])) << "a_2, component " << k;
+    EXPECT_TRUE(vanishes(c.covariant_basis[2][k] - s.R * sin(s.phi) * e_theta[k]))
+        << "a_3, component " << k;
+    EXPECT_TRUE(vanishes(c.contravariant_basis[2][k] - e_theta[k] / (s.R * sin(s.phi))))
+        << "a^3, component " << k;
+  }
+}
+
 // §4.10: [22,1] = −R, [33,1] = −R sin²φ, [12,2] = R, [13,3] = R sin²φ; the others vanish
 TEST(Curvilinear, SphericalChristoffelFirstKind) {
   const Spherical s;
@@ -100,6 +118,25 @@ TEST(Curvilinear, ParabolicBases) {
       EXPECT_TRUE(vanishes(c.covariant_basis[i][k] - covariants[i][k]));
       EXPECT_TRUE(vanishes(c.contravariant_basis[i][k] - duals[i][k]));
     }
+  }
+}
+
+// Ex. 1.5, where the coordinates fail: det a_ik = (u² + v²)² u² v², zero exactly on uv = 0 (the
+// E3 axis), where the map is refused.
+TEST(Curvilinear, ParabolicCoordinatesAreSingularOnUvZero) {
+  const GiNaC::realsymbol u("u"), v("v"), th("theta");
+  const std::vector<Expr> q{u, v, th};
+  const VectorExpr r{u * v * cos(th), u * v * sin(th), (pow(u, 2) - pow(v, 2)) / 2};
+  const CurvilinearCoordinates c = curvilinear_coordinates(r, q);
+  const ExprMatrix& a = c.metric;
+  const Expr det = a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) -
+                   a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0)) +
+                   a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0));
+  EXPECT_TRUE(vanishes(det - pow(u * u + v * v, 2) * pow(u * v, 2))) << det;
+  // with u = 0 (or v = 0) put in, r no longer depends on θ: no basis
+  for (const Expr& zero : {Expr(u), Expr(v)}) {
+    const VectorExpr on_axis{r[0].subs(zero == 0), r[1].subs(zero == 0), r[2].subs(zero == 0)};
+    EXPECT_THROW(curvilinear_coordinates(on_axis, q), std::invalid_argument) << zero;
   }
 }
 
