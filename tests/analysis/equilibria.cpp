@@ -91,8 +91,9 @@ TEST(Equilibria, SpringChainHasFour) {
 }
 
 // Steady rotation at 5 rad/s about E3 of the torque-free body (3-2-1 angles): about e3 (major axis)
-// or e2 (intermediate), either way up, 8 in all, ψ ignorable; about e1 the 3-2-1 angles are at
-// gimbal lock (θ = ±π/2), and those are counted as left out, not dropped in silence.
+// or e2 (intermediate), either way up, 8 in all, ψ ignorable, each with ω along a principal axis
+// (Ex. 9.12); about e1 the 3-2-1 angles are at gimbal lock (θ = ±π/2), and those are counted as
+// left out, not dropped in silence.
 TEST(Equilibria, SteadyRotationsOfATorqueFreeBody) {
   const System system = load_model(test::model_path("torque-free-body"));
   const CompiledSystem compiled(system, lagrange_equations(system));
@@ -104,6 +105,20 @@ TEST(Equilibria, SteadyRotationsOfATorqueFreeBody) {
   for (const Equilibrium& e : result.equilibria) {
     EXPECT_EQ(e.linearization.ignorable, (std::vector<std::string>{"psi"}));
     stable += e.modes.verdict == Stability::linearly_stable ? 1 : 0;
+    // Ex. 9.12: Euler's equations with ω̇ = 0 leave ω × Jω = 0, ω along a principal axis. ω from the
+    // 3-2-1 rates, ψ̇ E3 + θ̇ R3(ψ)E2 + φ̇ Q E1 with Q = R3(ψ)R2(θ)R1(φ), in the body's components
+    const Eigen::VectorXd& q = e.point.q;
+    const Eigen::VectorXd& rate = e.point.qdot;
+    const Eigen::Matrix3d R3 = Eigen::AngleAxisd(q[0], Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const Eigen::Matrix3d Q = R3 * Eigen::AngleAxisd(q[1], Eigen::Vector3d::UnitY()) *
+                              Eigen::AngleAxisd(q[2], Eigen::Vector3d::UnitX());
+    const Eigen::Vector3d omega = rate[0] * Eigen::Vector3d::UnitZ() +
+                                  rate[1] * R3 * Eigen::Vector3d::UnitY() +
+                                  rate[2] * Q * Eigen::Vector3d::UnitX();
+    const Eigen::Vector3d w = Q.transpose() * omega;
+    const Eigen::Vector3d Jw(2.0 * w[0], 4.0 * w[1], 5.0 * w[2]);  // λ = (2, 4, 5)
+    EXPECT_NEAR(w.norm(), 5.0, 1e-9);
+    EXPECT_LT(w.cross(Jw).norm(), 1e-9) << "ω = " << w.transpose() << " is no principal axis";
   }
   EXPECT_EQ(stable, 4);  // about the major axis, e3
   EXPECT_GT(result.singular, 0u);
