@@ -28,7 +28,8 @@ TEST(RollingDisk, EnergyContactLoadsAndEulersLaws) {
   }
 }
 
-// Ex. 8.9: the rolling constraints are not integrable; I(x1, ψ, φ) = −R sin ψ = S^1_45.
+// Ex. 8.9: the rolling constraints are not integrable; I(x1, ψ, φ) = −R sin ψ = S^1_45 and
+// I(x2, ψ, φ) = R cos ψ = S^2_45, as the book has them.
 TEST(RollingDisk, RollingIsNonholonomic) {
   const System system = load_model(test::model_path("rolling-disk"));
   const Integrability pi1 = constraint_integrability(system, 1);
@@ -37,6 +38,11 @@ TEST(RollingDisk, RollingIsNonholonomic) {
   const Expr psi = system.coordinates()[3].value;
   const Expr Rs = system.parameters[2].symbol;
   EXPECT_TRUE((pi1.value + Rs * GiNaC::sin(psi)).expand().is_zero()) << pi1.value;
+  // and π2's witness, S^2_45 = R cos ψ
+  const Integrability pi2 = constraint_integrability(system, 2);
+  ASSERT_FALSE(pi2.integrable);
+  EXPECT_EQ(pi2.witness, "I(x2, psi, phi)");
+  EXPECT_TRUE((pi2.value - Rs * GiNaC::cos(psi)).expand().is_zero()) << pi2.value;
   EXPECT_TRUE(constraint_integrability(system, 0).integrable);
   EXPECT_FALSE(set_integrability(system, {1, 2}).integrable);
 }
