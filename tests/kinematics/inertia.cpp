@@ -133,6 +133,35 @@ TEST(Inertia, Realisability) {
   }
 }
 
+// (7.18′) and the book's own example λ = (1, 2, 3): C = A + B is the perpendicular-axis theorem's
+// lamina, so unidyn accepts it (⚠ the book's strict inequalities call it unrealisable) — a
+// rectangular plate of mass m and sides a, b with m b²/12 = 1 and m a²/12 = 2 has exactly these
+// moments, typed here — while anything past it is refused.
+TEST(Inertia, TheBooksExampleOneTwoThreeIsALamina) {
+  const double m = 1.0, b = std::sqrt(12.0), a = std::sqrt(24.0);
+  const Vec3 plate(m * b * b / 12, m * a * a / 12, m * (a * a + b * b) / 12);
+  EXPECT_LT((plate - Vec3(1, 2, 3)).norm(), 1e-14);
+  EXPECT_TRUE(is_realisable_inertia(Vec3(1, 2, 3).asDiagonal()));
+  EXPECT_FALSE(is_realisable_inertia(Vec3(1, 2, 3.001).asDiagonal()));
+  EXPECT_FALSE(is_realisable_inertia(Vec3(3.001, 1, 2).asDiagonal()));
+}
+
+// Fig. 7.7: the six-mass satellite, masses (1, 2, 1.5) at ±L_k E_k with L = (0.5, 0.3, 0.2), as
+// point masses through the parallel-axis theorem: J0 = diag(12/25, 31/50, 43/50), the book's
+// printed values.
+TEST(Inertia, SixMassSatelliteOfFigure77) {
+  const double mass[3] = {1, 2, 1.5}, arm[3] = {0.5, 0.3, 0.2};
+  Tensor J0 = Tensor::Zero();
+  for (int k = 0; k < 3; ++k) {
+    for (const double side : {1.0, -1.0}) {
+      Vec3 d = Vec3::Zero();
+      d[k] = side * arm[k];
+      J0 += parallel_axis(Tensor::Zero(), mass[k], d);
+    }
+  }
+  EXPECT_LT((J0 - Tensor(Vec3(12.0 / 25, 31.0 / 50, 43.0 / 50).asDiagonal())).norm(), 1e-15);
+}
+
 // The principal moments of a shape as a diagonal tensor.
 Tensor principal(const std::string& shape, double mass, const std::vector<Expr>& dimensions) {
   const auto moments = shape_principal_moments(shape, mass, dimensions);
