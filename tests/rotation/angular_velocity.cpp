@@ -197,7 +197,7 @@ TEST(AngularVelocity, AxialVectorW2) {
   }
 }
 
-// Exercise 6.1(b): Ω_R = θ̇ (E2⊗E1 − E1⊗E2) = θ̇ (e_θ⊗e_r − e_r⊗e_θ), ω_R = θ̇ E3.
+// Exercise 6.1(b): Ω_R = θ̇ (E2⊗E1 − E1⊗E2) = θ̇ (e_θ⊗e_r − e_r⊗e_θ), ω_R = θ̇ E3; and §A.9 W9's Ȧ.
 TEST(AngularVelocity, Exercise6_1b) {
   const Vec3 E1 = basis_vector(1), E2 = basis_vector(2), E3 = basis_vector(3);
   for (const double theta : {-2.0, -0.4, 0.0, 0.9, 2.7}) {
@@ -216,6 +216,17 @@ TEST(AngularVelocity, Exercise6_1b) {
       EXPECT_LE(max_abs_diff(Omega, theta_rate * (dyad(E2, E1) - dyad(E1, E2))), 1e-14);
       EXPECT_LE(max_abs_diff(Omega, theta_rate * (dyad(e_theta, e_r) - dyad(e_r, e_theta))), 1e-14);
       EXPECT_LE(max_abs_diff(angular_velocity(R, R_rate), Vec3(theta_rate * E3)), 1e-14);
+      // §A.9 W9: Ȧ = θ̇ e_θ⊗E1 − θ̇ e_r⊗E2 as the book writes it, against the derivative of
+      // A(θ(t)) = L(θ0 + θ̇t, E3) by finite differences and against Q̇ = ΩQ (rotation_rate)
+      const Tensor book_rate = theta_rate * (dyad(e_theta, E1) - dyad(e_r, E2));
+      EXPECT_LE(max_abs_diff(R_rate, book_rate), 1e-14);
+      const Tensor differenced = test::derivative(
+          [&](double t) {
+            return rotation_tensor(AxisAngle{E3, theta + theta_rate * t});
+          },
+          0.0);
+      EXPECT_LE(max_abs_diff(differenced, book_rate), 1e-9);
+      EXPECT_LE(max_abs_diff(rotation_rate(R, Vec3(theta_rate * E3)), book_rate), 1e-14);
     }
   }
 }
