@@ -14,6 +14,7 @@
 
 #include "support/oracles.hpp"
 #include "unidyn/rotation/angular_velocity.hpp"
+#include "unidyn/rotation/axis_angle.hpp"
 #include "unidyn/rotation/errors.hpp"
 
 namespace unidyn {
@@ -819,7 +820,8 @@ TEST(EulerBookExercise, E62jIntegrationOf323KinematicEquation) {
 
 // Exercise 7.9(f): an aircraft starting level (3-1-2 angles 0) with gyro signals ω1 = 0.02 sin
 // 0.5t, ω2 = 0.02 sin 0.05t, ω3 = 2.0 sin 0.5t: the attitude from (7.28) is the one Q̇ = Q
-// skew(ω_body) gives (the book prints no numbers), clear of the set's singular roll ±π/2.
+// skew(ω_body) gives (the book prints no numbers), clear of the set's singular roll ±π/2; and
+// (iii), the rotation axis against the instantaneous axis.
 TEST(EulerBookExercise, E79fAircraftAttitudeFromGyros) {
   const EulerSet set = set_of("3-1-2");
   const auto body_omega = [](double t) {
@@ -830,6 +832,16 @@ TEST(EulerBookExercise, E79fAircraftAttitudeFromGyros) {
   EXPECT_LT(a.second_max, kPi / 2 - 0.5);
   EXPECT_GT(a.second_max - a.second_min, 1e-3);  // it does roll
   EXPECT_LT(max_abs_diff(rotation_tensor(set, a.angles), a.Q), 1e-8);
+  // (iii): the rotation axis q of Q(40) = Q(40)Q(0)ᵀ (L(angle, q) gives Q back, (6.8) typed) is
+  // not the instantaneous axis i = ω/‖ω‖ (§7.5; printed "ω̇/‖ω̇‖", a ⚠): 0.12 rad apart at t = 40,
+  // where the attitude is known to 1e-8
+  const AxisAngle rotation = axis_angle(a.Q);
+  EXPECT_LT(max_abs_diff(test::book_L(rotation.angle, rotation.axis), a.Q), 1e-12);
+  const Vec3 omega = a.Q * body_omega(40.0);
+  const double apart = std::acos(std::abs(rotation.axis.dot(omega.normalized())));
+  EXPECT_GT(apart, 1e-3) << "q = " << rotation.axis.transpose() << ", i = " << omega.transpose();
+  std::printf("t = 40: rotation angle %.4f about q, %.3f rad from the instantaneous axis\n",
+              rotation.angle, apart);
 }
 
 }  // namespace
