@@ -33,15 +33,18 @@ std::vector<std::string> FrictionPhases::start(double t, const Eigen::VectorXd& 
   compiled_.evaluate_friction(t, q, qdot, parameters_, data);
   for (std::size_t c = 0; c < event_count(); ++c) {
     const FrictionValues& f = data.friction[c];
-    const std::string name =
-        "'" + system_.constraints[compiled_.friction_constraints()[c]].name + "'";
+    const std::size_t k = compiled_.friction_constraints()[c];
+    const std::string name = "'" + system_.constraints[k].name + "'";
+    std::string line;
     if (slipping(f)) {
       data.friction_phase[c].stick = false;
       data.friction_phase[c].direction = f.slip.normalized();
-      lines.push_back(name + " slides");
+      line = name + " slides";
     } else {
-      lines.push_back(stick_or_slide(t, q, qdot, c, data));
+      line = stick_or_slide(t, q, qdot, c, data);
     }
+    // a unilateral contact that is apart neither sticks nor slides: its phase is set, not said
+    if (data.active.empty() || data.active[k]) lines.push_back(std::move(line));
   }
   return lines;
 }
