@@ -519,5 +519,43 @@ TEST(AngularVelocity, ReturnOfTheAxisOfExercise115) {
   }
 }
 
+// Exercise 11.5(d), the geometric phase: e3 goes once around a loop on the unit sphere (3-1-3 set,
+// ψ = 2πt, θ = θ0 + a sin 2πt, φ arbitrary, 0 ≤ t ≤ 1). The turn about e3 is the gyro's reading
+// plus the solid angle the loop encloses about E3: φ(1) − φ(0) = ∫ ω·e3 dt − ∮ cos θ dψ
+// = ∫ ω·e3 dt + A − 2π, with A = ∮ (1 − cos θ) dψ. ω and e3 from unidyn, the integrals by Simpson
+// here, and the turn read off Q(1)Q(0)ᵀ = L(Δφ, e3(0)).
+TEST(AngularVelocity, GeometricPhaseOfExercise115IsTheEnclosedArea) {
+  const EulerSet set{3, 1, 3};
+  const double theta0 = 0.8, a = 0.3, two_pi = 2 * kPi;
+  const auto angles = [&](double t) {
+    return Vec3(two_pi * t, theta0 + a * std::sin(two_pi * t),
+                0.5 * std::sin(two_pi * t) + 0.7 * t);
+  };
+  const auto rates = [&](double t) {
+    return Vec3(two_pi, a * two_pi * std::cos(two_pi * t),
+                0.5 * two_pi * std::cos(two_pi * t) + 0.7);
+  };
+  const int steps = 2000;  // even, for Simpson
+  double gyro = 0, area = 0;
+  for (int k = 0; k <= steps; ++k) {
+    const double t = static_cast<double>(k) / steps;
+    const double weight = (k == 0 || k == steps) ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0);
+    const Vec3 e3 = rotation_tensor(set, angles(t)) * basis_vector(3);
+    gyro += weight * angular_velocity(set, angles(t), rates(t)).dot(e3);
+    area += weight * (1 - std::cos(angles(t)[1])) * rates(t)[0];
+  }
+  gyro /= 3.0 * steps;
+  area /= 3.0 * steps;
+  const Tensor Q0 = rotation_tensor(set, angles(0)), Q1 = rotation_tensor(set, angles(1));
+  const Vec3 e3 = Q0 * basis_vector(3);
+  EXPECT_LE(max_abs_diff(Q1 * basis_vector(3), e3), 1e-14);  // the loop closes
+  const double turn = angles(1)[2] - angles(0)[2];
+  EXPECT_NEAR(turn, gyro + area - two_pi, 1e-10);
+  EXPECT_LE(max_abs_diff(Q1 * Q0.transpose(), test::book_L(gyro + area, e3)), 1e-10);
+  // the enclosed area is what makes the difference: the gyro alone misses it by far
+  EXPECT_GT(std::abs(std::remainder(turn - gyro, two_pi)), 0.5);
+  std::printf("gyro %.12f, area %.12f, turn %.12f\n", gyro, area, turn);
+}
+
 }  // namespace
 }  // namespace unidyn
