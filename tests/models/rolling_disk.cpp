@@ -1,6 +1,8 @@
 // The rolling disk (§10.7, (10.25)–(10.36)): energy, the contact force and moment M_c = π_P × F_c,
 // Euler's laws with the multipliers, integrability (Ex. 8.9), and its steady motions.
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 
@@ -67,6 +69,129 @@ TEST(RollingDisk, SteadyCircularRolling) {
     EXPECT_NEAR(run.at(i, "theta"), theta0, 1e-9) << run.at(i, "t");
     EXPECT_NEAR(run.at(i, "der(psi)"), Omega, 1e-8) << run.at(i, "t");
   }
+}
+
+// (10.35)–(10.36) with the rolling eliminated, by hand. Let s = φ̇ + ψ̇ cos θ (= ω · e3) and
+// e1' = cos ψ E1 + sin ψ E2, e2' = E3 × e1'. π1 = π2 = 0 of (10.36) say the centre moves
+// horizontally at v̄ = −R s e1' − R θ̇ sin θ e2', so (e1', e2' turning at ψ̇)
+//   ā · e1' = −R ṡ + R ψ̇ θ̇ sin θ,   ā · e2' = −R (θ̈ sin θ + θ̇² cos θ) − R ψ̇ s,
+// and x3 = R sin θ gives ā · E3 = R (θ̈ cos θ − θ̇² sin θ). With μ1 = m ẍ1, μ2 = m ẍ2 (the first two
+// of (10.35)), Φ5 = R m ā · e1', Φ3 = cos θ Φ5 and Φ4 = −m g R cos θ + R sin θ m ā · e2', the
+// φ, ψ and θ equations of (10.35) become
+//   (λ3 + m R²) ṡ = m R² ψ̇ θ̇ sin θ,
+//   λ sin θ ψ̈ = λ3 s θ̇ − 2 λ cos θ θ̇ ψ̇,
+//   (λ + m R²) θ̈ = −m g R cos θ − (λ3 + m R²) s ψ̇ sin θ + λ ψ̇² sin θ cos θ
+// (the m R² θ̇² terms cancel), and the contact force is F_c = m ā + m g E3 (μ3 from the last of
+// (10.35)). The notes' misprints of §10.7 (the unknowns printed as "x1, φ, θ, ψ", (10.32)–(10.33)
+// written with "u^1..u^9", the erratum of (10.38)) do not touch (10.35)'s equations used here.
+// State (x1, x2, ψ, θ, φ, ψ̇, θ̇, φ̇).
+using DiskState = std::array<double, 8>;
+
+struct DiskAccelerations {
+  double s_rate, psi, theta;
+};
+
+DiskAccelerations disk_accelerations(const DiskState& y) {
+  const double st = std::sin(y[3]), ct = std::cos(y[3]);
+  const double psid = y[5], thd = y[6], s = y[7] + psid * ct;
+  return {
+      m * R * R * psid * thd * st / (lambda3 + m * R * R),
+      (lambda3 * s * thd - 2 * lambda * ct * thd * psid) / (lambda * st),
+      (-m * g * R * ct - (lambda3 + m * R * R) * s * psid * st + lambda * psid * psid * st * ct) /
+          (lambda + m * R * R)};
+}
+
+DiskState disk_rates(const DiskState& y) {
+  const double sp = std::sin(y[2]), cp = std::cos(y[2]), st = std::sin(y[3]), ct = std::cos(y[3]);
+  const double psid = y[5], thd = y[6], s = y[7] + psid * ct;
+  const DiskAccelerations a = disk_accelerations(y);
+  return {-R * (s * cp - thd * st * sp),
+          -R * (s * sp + thd * st * cp),
+          psid,
+          thd,
+          y[7],
+          a.psi,
+          a.theta,
+          a.s_rate - a.psi * ct + psid * thd * st};
+}
+
+// The contact force m ā + m g E3 from the hand kinematics above.
+std::array<double, 3> contact_force(const DiskState& y) {
+  const double sp = std::sin(y[2]), cp = std::cos(y[2]), st = std::sin(y[3]), ct = std::cos(y[3]);
+  const double psid = y[5], thd = y[6], s = y[7] + psid * ct;
+  const DiskAccelerations a = disk_accelerations(y);
+  const double along = -R * a.s_rate + R * psid * thd * st;
+  const double across = -R * (a.theta * st + thd * thd * ct) - R * psid * s;
+  return {m * (along * cp - across * sp), m * (along * sp + across * cp),
+          m * R * (a.theta * ct - thd * thd * st) + m * g};
+}
+
+DiskState disk_rk4(DiskState y, double h, int n) {
+  auto add = [](const DiskState& x, const DiskState& k, double f) {
+    DiskState z;
+    for (std::size_t j = 0; j < z.size(); ++j) z[j] = x[j] + f * k[j];
+    return z;
+  };
+  for (int i = 0; i < n; ++i) {
+    const DiskState k1 = disk_rates(y), k2 = disk_rates(add(y, k1, h / 2)),
+                    k3 = disk_rates(add(y, k2, h / 2)), k4 = disk_rates(add(y, k3, h));
+    for (std::size_t j = 0; j < y.size(); ++j)
+      y[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+  }
+  return y;
+}
+
+// §10.7's transient: from the model's start (θ0 = 1.2, θ̇0 = 0, ψ̇0 = 1.5, φ̇0 = 12 — not a steady
+// circle: θ̈(0) ≈ −40 rad/s², θ then nutates between ~0.97 and 1.2 and ψ̇ swings to ~−5.7) the
+// run's θ, ψ̇, φ̇ (and ψ, φ, x1, x2) against the reduced (10.35)–(10.36) above integrated here by
+// RK4 (h = 0.1 ms), and the run's contact force F_c = disk.constraint_force (the three
+// constraints' loads) against m ā − F = m ā + m g E3 with ā from the hand kinematics of the
+// centre on the RK4 state.
+TEST(RollingDisk, TransientAndContactForceAgreeWithReduced1035ByRk4) {
+  std::ifstream file(test::model_path("rolling-disk"));
+  std::stringstream text;
+  text << file.rdbuf()
+       << "  Fc1: dot(disk.constraint_force, E1)\n  Fc2: dot(disk.constraint_force, E2)\n"
+          "  Fc3: dot(disk.constraint_force, E3)\n";
+  const test::ModelRun run = test::run_system(parse_model(text.str(), "rolling-disk-fc.yaml"));
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  ASSERT_EQ(run.parameter("m"), m);
+  ASSERT_EQ(run.parameter("g"), g);
+  ASSERT_EQ(run.parameter("R"), R);
+  DiskState y{run.at(0, "x1"),         run.at(0, "x2"),      run.at(0, "psi"),
+              run.at(0, "theta"),      run.at(0, "phi"),     run.at(0, "der(psi)"),
+              run.at(0, "der(theta)"), run.at(0, "der(phi)")};
+  double theta_error = 0, rate_error = 0, angle_error = 0, position_error = 0, force_error = 0;
+  double theta_min = y[3], largest_friction = 0;
+  for (std::size_t k = 0; k < run.rows.size(); ++k) {
+    if (k > 0) y = disk_rk4(y, 1e-4, 100);  // the rows are 0.01 s apart
+    ASSERT_NEAR(run.at(k, "t"), 0.01 * static_cast<double>(k), 1e-12);
+    theta_error = std::max(theta_error, std::abs(run.at(k, "theta") - y[3]));
+    rate_error = std::max({rate_error, std::abs(run.at(k, "der(psi)") - y[5]),
+                           std::abs(run.at(k, "der(phi)") - y[7])});
+    angle_error = std::max(
+        {angle_error, std::abs(run.at(k, "psi") - y[2]), std::abs(run.at(k, "phi") - y[4])});
+    position_error = std::max(
+        {position_error, std::abs(run.at(k, "x1") - y[0]), std::abs(run.at(k, "x2") - y[1])});
+    const std::array<double, 3> F = contact_force(y);
+    force_error = std::max({force_error, std::abs(run.at(k, "Fc1") - F[0]),
+                            std::abs(run.at(k, "Fc2") - F[1]), std::abs(run.at(k, "Fc3") - F[2])});
+    theta_min = std::min(theta_min, y[3]);
+    largest_friction = std::max(largest_friction, std::hypot(F[0], F[1]));
+  }
+  EXPECT_LT(theta_min, 1.0);         // a transient, far from the start's θ0 = 1.2
+  EXPECT_GT(largest_friction, 1.0);  // the rolling does act (m g = 9.81 N)
+  // RK4 at h = 1e-4 s (φ̇ ~ 12–16 rad/s: error ~1e-13) against a run at rtol 1e-12 over 5 s,
+  // ~11 spin turns: ~1e-10 of the rates and of m g
+  EXPECT_LT(theta_error, 1e-10);
+  EXPECT_LT(rate_error, 1e-9);
+  EXPECT_LT(angle_error, 1e-9);
+  EXPECT_LT(position_error, 1e-10);
+  EXPECT_LT(force_error, 1e-9);
+  std::printf(
+      "reduced (10.35) by RK4 vs model over 5 s: theta %.3g, rates %.3g rad/s, psi/phi %.3g, "
+      "x1/x2 %.3g m, F_c %.3g N (friction up to %.3g N)\n",
+      theta_error, rate_error, angle_error, position_error, force_error, largest_friction);
 }
 
 }  // namespace
