@@ -1,10 +1,14 @@
 // Conservative forces and moments on bodies (§8.7, (8.27)): a torsion spring's moment along the
 // dual Euler basis (Ex. 8.6), and a spring at a body point (Ex. 8.8) whose force and moment π_A × F
 // equal −∂U/∂x̄ and −Σ ∂U/∂γ^i g^i with g^i from the rotation layer's dual Euler basis.
+#include <algorithm>
 #include <cmath>
-
+#include <cstdio>
+#include <string>
 #include <vector>
+
 #include "support/model_run.hpp"
+#include "unidyn/io/model_file.hpp"
 #include "unidyn/rotation/euler_angles.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
@@ -124,6 +128,60 @@ TEST(ConservativeMoments, KineticEnergyOfTheTopOfExercise86) {
         0.5 * la * std::pow(dphi + dpsi * std::cos(theta), 2);
     EXPECT_NEAR(seen[0], T, 1e-12 * T) << k;
   }
+}
+
+// Exercise 8.6(b)–(c): the same top's angular momenta, the model's `top.H` and
+// `top.angular_momentum` (outputs added to the model's text here) at the same ten states, against
+// the book's closed forms typed from the angles with e1″ = cos ψ E1 + sin ψ E2,
+// e2″ = −cos θ sin ψ E1 + cos θ cos ψ E2 + sin θ E3, e3″ = e3 = sin θ sin ψ E1 − sin θ cos ψ E2 +
+// cos θ E3:
+//   (b) H = λ_t θ̇ e1″ + λ_t ψ̇ sin θ e2″ + λ_a (φ̇ + ψ̇ cos θ) e3″,
+//   (c) H_O = H + L1 e3 × m v̄ with v̄ = ω × L1 e3 and ω of (a) = θ̇ e1″ + ψ̇ sin θ e2″ +
+//       (φ̇ + ψ̇ cos θ) e3″; the book's m L1² (ω1 e1 + ω2 e2) = m L1² (θ̇ e1″ + ψ̇ sin θ e2″) too.
+TEST(ConservativeMoments, AngularMomentaOfTheTopOfExercise86) {
+  const double m = 1.0, L1 = 0.05, lt = 0.004, la = 0.002;
+  const std::string text = read_model_text(test::model_path("top-torsion-spring")) +
+                           "outputs:\n  H: top.H\n  H_O: top.angular_momentum\n";
+  const System system = parse_model(text, "top-torsion-spring.yaml");
+  const CompiledSystem compiled(system, lagrange_equations(system));
+  const SimulationStart start = initial_state(system, {});
+  CompiledSystemData data = compiled.make_data();
+  const Eigen::VectorXd none = Eigen::VectorXd::Zero(3), no_lambda(0);
+  std::vector<double> seen(compiled.observation_count());
+  const auto& names = compiled.observation_names();
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  const std::size_t H_at = column("H.x"), HO_at = column("H_O.x");
+  ASSERT_LT(H_at + 2, names.size());
+  ASSERT_LT(HO_at + 2, names.size());
+  using Vec = Eigen::Vector3d;
+  double worst_H = 0, worst_HO = 0;
+  for (int k = 0; k < 10; ++k) {
+    const double psi = 0.3 * k - 1, theta = 0.2 + 0.25 * k, phi = 0.7 * k;
+    const double dpsi = 1.5 - 0.2 * k, dtheta = 0.4 * k - 2, dphi = 30 + k;
+    Eigen::VectorXd q(3), qdot(3);
+    q << psi, theta, phi;
+    qdot << dpsi, dtheta, dphi;
+    compiled.observe(0, q, qdot, none, no_lambda, start.parameters, seen, data);
+    const double cs = std::cos(psi), ss = std::sin(psi), ct = std::cos(theta), st = std::sin(theta);
+    const Vec e1(cs, ss, 0), e2(-ct * ss, ct * cs, st), e3(st * ss, -st * cs, ct);
+    const Vec H = lt * dtheta * e1 + lt * dpsi * st * e2 + la * (dphi + dpsi * ct) * e3;
+    const Vec omega = dtheta * e1 + dpsi * st * e2 + (dphi + dpsi * ct) * e3;
+    const Vec vbar = omega.cross(L1 * e3);
+    const Vec HO = H + (L1 * e3).cross(m * vbar);
+    const Vec HO_book = H + m * L1 * L1 * (dtheta * e1 + dpsi * st * e2);
+    for (std::size_t i = 0; i < 3; ++i) {
+      const auto c = static_cast<Eigen::Index>(i);
+      worst_H = std::max(worst_H, std::abs(seen[H_at + i] - H[c]));
+      worst_HO = std::max(worst_HO, std::abs(seen[HO_at + i] - HO[c]));
+      EXPECT_NEAR(seen[H_at + i], H[c], 1e-15 * (1 + H.norm())) << k;
+      EXPECT_NEAR(seen[HO_at + i], HO[c], 1e-15 * (1 + HO.norm())) << k;
+      EXPECT_NEAR(HO_book[c], HO[c], 1e-15 * (1 + HO.norm())) << k;
+    }
+  }
+  std::printf("  Ex. 8.6(b), (c): max |H - book| %.2e, max |H_O - book| %.2e (kg m^2/s)\n", worst_H,
+              worst_HO);
 }
 
 }  // namespace

@@ -4,12 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <string>
 
 #include "support/model_run.hpp"
 #include "support/oracles.hpp"
+#include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
 namespace {
@@ -157,6 +160,59 @@ TEST(DumbbellSatellite, AngularMomentumClosedForm) {
   EXPECT_GT(spin_size, 0.0);
   record("closed_form_relative_error", error);
   record("spin_part_relative_error", spin_error);
+}
+
+// The model file with the particles' accelerations as outputs (columns a1.x … a2.z).
+const test::ModelRun& run_with_accelerations() {
+  static const test::ModelRun run = [] {
+    std::ifstream file(test::model_path("dumbbell-satellite"));
+    std::stringstream text;
+    text << file.rdbuf();
+    text << "outputs:\n  a1: P1.acceleration\n  a2: P2.acceleration\n";
+    return test::run_system(parse_model(text.str(), "dumbbell-satellite.yaml"), {},
+                            [](SimulationOptions& o) { o.t_end = 2.0; });
+  }();
+  return run;
+}
+
+// §4.5 (Fig. 4.3), the spring pair force by force: with x = r2 − r1 computed here from the row's
+// (r̄, R, φ, θ) by (5.7), the spring's forces (from U_s = K/2 (|x| − L0)², F_con,i = −∂U_s/∂r_i)
+//   F_12 = K (|x| − L0) x/|x| on P1,   F_21 = −F_12 on P2
+// are equal and opposite along r2 − r1; the run's accelerations (a1, a2 from q̈ at each row) less
+// the planet's pulls −GM m_i r_i/|r_i|³ must be them: m1 a1 + GM m1 r1/|r1|³ = F_12 and
+// m2 a2 + GM m2 r2/|r2|³ = −F_12; the sum of the two is the third law.
+TEST(DumbbellSatellite, SpringForcesAreEqualOppositeAlongTheSpring) {
+  const auto& run = run_with_accelerations();
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  double error1 = 0, error2 = 0, third_law = 0, smallest = INFINITY, largest = 0;
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    const Dumbbell d = dumbbell(run, i);
+    const Vec3 r1 = d.center - m2 / m * d.R * d.e_R(), r2 = d.center + m1 / m * d.R * d.e_R();
+    const Vec3 x = r2 - r1;
+    const Vec3 F12 = K * (x.norm() - L0) * x.normalized();
+    const Vec3 a1(run.at(i, "a1.x"), run.at(i, "a1.y"), run.at(i, "a1.z"));
+    const Vec3 a2(run.at(i, "a2.x"), run.at(i, "a2.y"), run.at(i, "a2.z"));
+    const Vec3 spring1 = m1 * a1 + G * M * m1 * r1 / std::pow(r1.norm(), 3);
+    const Vec3 spring2 = m2 * a2 + G * M * m2 * r2 / std::pow(r2.norm(), 3);
+    error1 = std::max(error1, (spring1 - F12).norm());
+    error2 = std::max(error2, (spring2 + F12).norm());
+    third_law = std::max(third_law, (spring1 + spring2).norm());
+    smallest = std::min(smallest, F12.norm());
+    largest = std::max(largest, F12.norm());
+  }
+  std::printf(
+      "Dumbbell spring pair: |F_12| = K(|x| − L0) from %.3g to %.3g N; m1 a1 − gravity − F_12 "
+      "%.3g, "
+      "m2 a2 − gravity + F_12 %.3g, sum %.3g (relative to the largest |F_12|)\n",
+      smallest, largest, error1 / largest, error2 / largest, third_law / largest);
+  // both sides at the same state: round-off of forces of ~1e-3 N (the planet's pull on each is of
+  // the size of the largest F_12)
+  EXPECT_LT(error1 / largest, 1e-12);
+  EXPECT_LT(error2 / largest, 1e-12);
+  EXPECT_LT(third_law / largest, 1e-12);
+  EXPECT_GT(largest, 100 * smallest);  // the spring's force varies: it vibrates
+  record("spring_force_error_P1", error1 / largest);
+  record("spring_force_error_P2", error2 / largest);
 }
 
 }  // namespace

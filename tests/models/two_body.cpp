@@ -3,13 +3,17 @@
 // orbit (§2.8) with GM replaced by G(m1 + m2) and the reduced mass m1 m2/(m1 + m2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <string>
 
 #include "support/model_run.hpp"
 #include "support/oracles.hpp"
+#include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
 namespace {
@@ -158,6 +162,110 @@ TEST(TwoBody, RelativeMotionIsAKeplerOrbit) {
   EXPECT_LT(plane_error, 1e-10);
   record("relative_energy_drift", relative_energy_error / std::abs(E_rel));
   record("orbital_plane_error", plane_error);
+}
+
+// Exercise 4.5(d), the gravitational pair force by force: models/two-body.yaml with the
+// particles' accelerations as outputs; m1 a1 = G m1 m2 x/|x|³ = −m2 a2 (x = r2 − r1, from
+// U = −G m1 m2/|x|, F_con,i = −∂U/∂r_i), computed here from the row's positions.
+TEST(TwoBody, GravitationalForcesAreEqualOppositeAlongTheLine) {
+  std::ifstream file(test::model_path("two-body"));
+  std::stringstream text;
+  text << file.rdbuf() << "outputs:\n  a1: A.acceleration\n  a2: B.acceleration\n";
+  const test::ModelRun run = test::run_system(parse_model(text.str(), "two-body.yaml"));
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  double error = 0;
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    const Bodies b = bodies(run, i);
+    const Vec3 x = b.r2 - b.r1;
+    const Vec3 F12 = G * m1 * m2 * x / std::pow(x.norm(), 3);
+    const Vec3 a1(run.at(i, "a1.x"), run.at(i, "a1.y"), run.at(i, "a1.z"));
+    const Vec3 a2(run.at(i, "a2.x"), run.at(i, "a2.y"), run.at(i, "a2.z"));
+    error =
+        std::max({error, (m1 * a1 - F12).norm() / F12.norm(), (m2 * a2 + F12).norm() / F12.norm()});
+  }
+  std::printf("Two bodies: m1 a1 and m2 a2 against ±G m1 m2 x/|x|³: %.3g (relative)\n", error);
+  EXPECT_LT(error, 1e-13);  // both sides at the same state: round-off
+  record("gravitational_pair_error", error);
+}
+
+// Exercise 4.5(c), (4.43): two free particles (gravity −g E3 on both) joined by a rod whose length
+// is prescribed, Ψ = |r2 − r1| − L(t), L(t) = L + a sin ωt.
+constexpr const char* kRheonomicRod = R"yaml(unidyn: 1
+name: Two particles on a rod of prescribed length
+parameters: {m1: 1.0, m2: 0.5, L: 1.0, a: 0.3, w: 2.0, u: 1.5, g: 9.81}
+coordinates: [x1, y1, z1, x2, y2, z2]
+particles:
+  A: {mass: m1, position: [x1, y1, z1]}
+  B: {mass: m2, position: [x2, y2, z2]}
+forces:
+  - gravity: -g*E3
+constraints:
+  - {name: rod, position: sqrt((x2 - x1)^2 + (y2 - y1)^2 + (z2 - z1)^2) - L - a*sin(w*t)}
+initial: {x2: L, der(x1): 0.1, der(y1): -0.2, der(z1): 0.3,
+          der(x2): 0.1 + a*w, der(y2): -0.2 + u, der(z2): 0.3}
+simulate: {t_end: 6, output_step: 0.001, rtol: 1e-12}
+outputs:
+  # m a − F on each particle: the constraint forces the motion needs
+  R1: A.constraint_force
+  R2: B.constraint_force
+)yaml";
+
+// Exercise 4.5(c) solved by hand. F_c1 = λ ∂Ψ/∂r1 = −λ e, F_c2 = λ ∂Ψ/∂r2 = +λ e with e = x/|x|,
+// x = r2 − r1: equal and opposite because Ψ depends on |r2 − r1| only. Then
+//   - the centre of mass moves as if free: r̄ = r̄0 + v̄0 t − ½ g t² E3 (F_c1 + F_c2 = 0);
+//   - ẍ = F_c2/m2 − F_c1/m1 = (λ/μ_r) e with μ_r = m1m2/(m1 + m2), so x × ẋ is constant: x stays
+//     in the plane E1–E2 of x(0) = L E1, ẋ(0) = a ω E1 + u E2; with x = L(t)(cos θ, sin θ, 0),
+//     L² θ̇ = h = L u (θ(t) = ∫ h/L² dt, Simpson's rule here) and the radial part of ẍ gives
+//       λ = μ_r (L̈ − L θ̇²) = μ_r (L̈ − h²/L³),   F_c2 = −F_c1 = μ_r (L̈ − h²/L³) e.
+// Compared with: the run's r1, r2 (through r̄ and x), its multiplier lambda(rod), and its
+// constraint-force columns R1 = m1 a1 − F1 and R2 = m2 a2 − F2.
+TEST(TwoBody, RheonomicRodForcesOfExercise45c) {
+  const test::ModelRun run = test::run_system(parse_model(kRheonomicRod, "rheonomic-rod.yaml"));
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const double M1 = run.parameter("m1"), M2 = run.parameter("m2"), L = run.parameter("L"),
+               a = run.parameter("a"), w = run.parameter("w"), u = run.parameter("u"),
+               g = run.parameter("g");
+  const double mu_r = M1 * M2 / (M1 + M2), h = L * u;
+  const auto length = [&](double t) { return L + a * std::sin(w * t); };
+  const auto length_acceleration = [&](double t) { return -a * w * w * std::sin(w * t); };
+  const Bodies start = bodies(run, 0);
+  const Vec3 c0 = (M1 * start.r1 + M2 * start.r2) / (M1 + M2);
+  const Vec3 u0 = (M1 * start.v1 + M2 * start.v2) / (M1 + M2);
+  const double dt = run.at(1, "t") - run.at(0, "t");
+  double theta = 0, centre_error = 0, relative_error = 0, lambda_error = 0, force_error = 0,
+         largest = 0, smallest = INFINITY;
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    const double t = run.at(i, "t");
+    if (i > 0) {  // θ from the previous row by Simpson's rule on [t − dt, t]
+      const auto rate = [&](double s) { return h / (length(s) * length(s)); };
+      theta += dt / 6 * (rate(t - dt) + 4 * rate(t - dt / 2) + rate(t));
+    }
+    const Bodies b = bodies(run, i);
+    const Vec3 c = (M1 * b.r1 + M2 * b.r2) / (M1 + M2);
+    centre_error = std::max(centre_error, (c - c0 - u0 * t + Vec3(0, 0, 0.5 * g * t * t)).norm());
+    const Vec3 e(std::cos(theta), std::sin(theta), 0.0);
+    relative_error = std::max(relative_error, (b.r2 - b.r1 - length(t) * e).norm());
+    const double Lt = length(t);
+    const double lambda = mu_r * (length_acceleration(t) - h * h / (Lt * Lt * Lt));
+    lambda_error = std::max(lambda_error, std::abs(run.at(i, "lambda(rod)") - lambda));
+    const Vec3 R1(run.at(i, "R1.x"), run.at(i, "R1.y"), run.at(i, "R1.z"));
+    const Vec3 R2(run.at(i, "R2.x"), run.at(i, "R2.y"), run.at(i, "R2.z"));
+    force_error = std::max({force_error, (R1 + lambda * e).norm(), (R2 - lambda * e).norm()});
+    largest = std::max(largest, std::abs(lambda));
+    smallest = std::min(smallest, std::abs(lambda));
+  }
+  std::printf(
+      "Rheonomic rod (Ex. 4.5(c)): |λ| from %.3g to %.3g N; centre of mass %.3g m, x = L(t) e(θ) "
+      "%.3g m, λ = μ_r(L̈ − h²/L³) %.3g N, R1 = −R2 = −λe %.3g N over %g s\n",
+      smallest, largest, centre_error, relative_error, lambda_error, force_error,
+      run.rows.back()[0]);
+  // the run's global error at rtol 1e-12 over 6 s (~2 turns), Simpson's error dt⁴ ~ 1e-12 per row
+  // in θ; λ and the forces at the run's state (its θ̇ off by the same global error)
+  EXPECT_LT(centre_error, 1e-10);
+  EXPECT_LT(relative_error, 1e-9);
+  EXPECT_LT(lambda_error, 1e-9 * largest);
+  EXPECT_LT(force_error, 1e-9 * largest);
+  EXPECT_GT(largest - smallest, 0.5);  // L̈ and h²/L³ do change λ
 }
 
 }  // namespace
