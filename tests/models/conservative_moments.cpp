@@ -106,6 +106,44 @@ TEST(ConservativeMoments, ZieglersConstantMomentHasNoPotential) {
   }
 }
 
+// Exercise 8.7, the work on two paths: between the same two configurations (θ, φ) = (π/2, 0) and
+// (0, π) of the 3-1-3 angles, unidyn's generalised forces of M E3 do the work M π cos θ along
+// φ — first θ then φ: M π; first φ then θ: 0 (the book's "Mπ against 0"). The work is the sum of
+// Φ_θ dθ + Φ_φ dφ along each straight leg, by Simpson's rule here; a potential would give one
+// value.
+TEST(ConservativeMoments, ZieglersMomentDoesDifferentWorkOnTwoPaths) {
+  const System system = load_model(test::model_path("ziegler-moment"));
+  const auto& q = system.coordinates();
+  const VectorExpr omega = system.angular_velocity(0);
+  const VectorExpr ziegler = system.forces[0].moments[0].moment;
+  const Expr M = system.parameters[0].symbol;
+  const Expr Phi_theta = dot(ziegler, diff(omega, q[1].rate));
+  const Expr Phi_phi = dot(ziegler, diff(omega, q[2].rate));
+  const auto value = [&](const Expr& e, double theta, double phi) {
+    const GiNaC::exmap at{{q[0].value, 0.3}, {q[1].value, theta}, {q[2].value, phi}, {M, 2.0}};
+    return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(at))).to_double();
+  };
+  // ∫ along the straight leg from (θ0, φ0) to (θ1, φ1)
+  const auto leg = [&](double theta0, double phi0, double theta1, double phi1) {
+    const int n = 200;
+    double sum = 0;
+    for (int k = 0; k <= n; ++k) {
+      const double s = static_cast<double>(k) / n;
+      const double weight = (k == 0 || k == n) ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0);
+      const double theta = theta0 + s * (theta1 - theta0), phi = phi0 + s * (phi1 - phi0);
+      sum += weight * (value(Phi_theta, theta, phi) * (theta1 - theta0) +
+                       value(Phi_phi, theta, phi) * (phi1 - phi0));
+    }
+    return sum / (3.0 * n);
+  };
+  const double pi = std::acos(-1.0), half = pi / 2;
+  const double theta_first = leg(half, 0, 0, 0) + leg(0, 0, 0, pi);
+  const double phi_first = leg(half, 0, half, pi) + leg(half, pi, 0, pi);
+  EXPECT_NEAR(theta_first, 2.0 * pi, 1e-10);  // M π with M = 2
+  EXPECT_NEAR(phi_first, 0.0, 1e-10);
+  std::printf("work of M E3: %.12f (theta first), %.3g (phi first)\n", theta_first, phi_first);
+}
+
 // Exercise 8.6(b)–(d): the top about its fixed point (x̄ = L1 e3, J = λ_t (I − e3⊗e3) + λ_a e3⊗e3)
 // has T = ½ (λ_t + m L1²)(θ̇² + ψ̇² sin²θ) + ½ λ_a (φ̇ + ψ̇ cos θ)² in its 3-1-3 angles, at any state.
 TEST(ConservativeMoments, KineticEnergyOfTheTopOfExercise86) {
