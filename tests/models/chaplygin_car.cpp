@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "support/model_run.hpp"
+#include "support/rk4.hpp"
 #include "unidyn/kinematics/integrability.hpp"
 
 namespace unidyn {
@@ -63,22 +64,6 @@ struct Sled {
     return {u * c - L1 * w * sn, u * sn + L1 * w * c, w, L1 * w * w,
             -m * L1 * u * w / (lambda3 + m * L1 * L1)};
   }
-  // Classical RK4 over h, n times.
-  SledState rk4(SledState s, double h, int n) const {
-    auto add = [](const SledState& x, const SledState& k, double f) {
-      SledState y;
-      for (std::size_t j = 0; j < y.size(); ++j) y[j] = x[j] + f * k[j];
-      return y;
-    };
-    for (int i = 0; i < n; ++i) {
-      const SledState k1 = rates(s), k2 = rates(add(s, k1, h / 2)), k3 = rates(add(s, k2, h / 2)),
-                      k4 = rates(add(s, k3, h));
-      for (std::size_t j = 0; j < s.size(); ++j) {
-        s[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-      }
-    }
-    return s;
-  }
 };
 
 // (10.50) as a motion: x1, x2, φ and the multiplier μ4 of the run against the sled's reduced
@@ -98,7 +83,10 @@ TEST(ChaplyginCar, MotionAndMultiplierAgreeWithTheSledsReducedEquations) {
   const double K = (sled.lambda3 + sled.m * sled.L1 * sled.L1) / sled.m, C = u0 * u0 + K * w0 * w0;
   double position_error = 0, angle_error = 0, mu_error = 0, closed_form_error = 0, largest_mu = 0;
   for (std::size_t k = 0; k < run.rows.size(); ++k) {
-    if (k > 0) s = sled.rk4(s, 0.0005, 20);  // the rows are 0.01 s apart
+    if (k > 0) {  // the rows are 0.01 s apart: 20 steps of 0.5 ms
+      s = test::rk4(s, 0.0, 0.01, 20,
+                    [&sled](double, const SledState& q) { return sled.rates(q); });
+    }
     const double t = run.at(k, "t");
     ASSERT_NEAR(t, 0.01 * static_cast<double>(k), 1e-12);
     position_error = std::max(

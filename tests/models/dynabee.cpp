@@ -29,6 +29,7 @@
 #include <Eigen/Dense>
 
 #include "support/model_run.hpp"
+#include "support/rk4.hpp"
 #include "unidyn/equations/lagrange.hpp"
 
 namespace unidyn {
@@ -58,22 +59,6 @@ Rotor rotor_of(const test::ModelRun& run) {
 
 using State = std::array<double, 2>;  // (α, α̇)
 
-// Classical RK4 of (*) from t0 to t1 in n steps.
-State rk4(State s, double t0, double t1, int n, const Rotor& rotor) {
-  const double h = (t1 - t0) / n;
-  auto f = [&](double t, const State& x) { return State{x[1], rotor.acceleration(t, x[0])}; };
-  for (int i = 0; i < n; ++i) {
-    const double t = t0 + i * h;
-    const State k1 = f(t, s);
-    const State k2 = f(t + h / 2, {s[0] + h / 2 * k1[0], s[1] + h / 2 * k1[1]});
-    const State k3 = f(t + h / 2, {s[0] + h / 2 * k2[0], s[1] + h / 2 * k2[1]});
-    const State k4 = f(t + h, {s[0] + h * k3[0], s[1] + h * k3[1]});
-    s[0] += h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0]);
-    s[1] += h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]);
-  }
-  return s;
-}
-
 struct Errors {
   double alpha = 0, rate = 0, lambda = 0, swing = 0;
 };
@@ -83,13 +68,17 @@ struct Errors {
 Errors compare_with_rk4(const test::ModelRun& run) {
   const Rotor rotor = rotor_of(run);
   const double R_a = run.parameter("R_a");
+  // (*) as a first-order system in (α, α̇)
+  const auto rates = [&rotor](double t, const State& x) {
+    return State{x[1], rotor.acceleration(t, x[0])};
+  };
   State s{run.at(0, "alpha"), run.at(0, "der(alpha)")};
   Errors e;
   double t = run.at(0, "t"), lowest = s[1], highest = s[1];
   for (std::size_t i = 0; i < run.rows.size(); ++i) {
     const double t1 = run.at(i, "t");
     if (t1 > t)
-      s = rk4(s, t, t1, std::max(1, static_cast<int>(std::lround((t1 - t) / 1e-4))), rotor);
+      s = test::rk4(s, t, t1, std::max(1, static_cast<int>(std::lround((t1 - t) / 1e-4))), rates);
     t = t1;
     e.alpha = std::max(e.alpha, std::abs(run.at(i, "alpha") - s[0]));
     e.rate = std::max(e.rate, std::abs(run.at(i, "der(alpha)") - s[1]));

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "support/model_run.hpp"
+#include "support/rk4.hpp"
 #include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
@@ -92,21 +93,6 @@ struct EllipsoidSurface {
   }
 };
 
-std::array<double, 4> rk4(std::array<double, 4> s, double h, int n, const EllipsoidSurface& e) {
-  auto add = [](const std::array<double, 4>& x, const std::array<double, 4>& k, double f) {
-    return std::array<double, 4>{x[0] + f * k[0], x[1] + f * k[1], x[2] + f * k[2],
-                                 x[3] + f * k[3]};
-  };
-  for (int i = 0; i < n; ++i) {
-    const auto k1 = e.rates(s);
-    const auto k2 = e.rates(add(s, k1, h / 2));
-    const auto k3 = e.rates(add(s, k2, h / 2));
-    const auto k4 = e.rates(add(s, k3, h));
-    for (int j = 0; j < 4; ++j) s[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-  }
-  return s;
-}
-
 // Exercise 3.9 (b), (c): models/ellipsoid.yaml (approach I, Cartesian coordinates and a
 // multiplier) against the two second-order equations above, typed by hand and integrated here by
 // RK4 (h = 1e-4 s) from the same point and velocity: x, y, z and their rates over 4 s.
@@ -126,7 +112,8 @@ TEST(Ellipsoid, CartesianRunAgainstTheTwoHandDerivedSurfaceEquationsByRk4) {
   std::array<double, 4> s{phi, dphi, theta, dtheta};
   double position_error = 0, velocity_error = 0, farthest = 0;
   for (std::size_t k = 1; k < run.rows.size(); ++k) {
-    s = rk4(s, (run.at(k, "t") - run.at(k - 1, "t")) / 100, 100, e);
+    s = test::rk4(s, run.at(k - 1, "t"), run.at(k, "t"), 100,
+                  [&e](double, const std::array<double, 4>& q) { return e.rates(q); });
     const double sp = std::sin(s[0]), cp = std::cos(s[0]), st = std::sin(s[2]), ct = std::cos(s[2]);
     const std::array<double, 3> r{e.a * cp, e.b * sp * ct, e.c * sp * st};
     const std::array<double, 3> v{-e.a * sp * s[1], e.b * (cp * ct * s[1] - sp * st * s[3]),

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "support/model_run.hpp"
+#include "support/rk4.hpp"
 #include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
@@ -60,24 +61,15 @@ struct ConeOnSphere {
   double d(double t) const { return d0 + a * std::sin(w * t); }
   double ddot(double t) const { return a * w * std::cos(w * t); }
   double dddot(double t) const { return -a * w * w * std::sin(w * t); }
+  // the run's parameters, and φ0
+  static ConeOnSphere of(const test::ModelRun& run, double polar_angle) {
+    return {run.parameter("m"), run.parameter("g"), run.parameter("D"), run.parameter("d0"),
+            run.parameter("a"), run.parameter("w"), polar_angle};
+  }
   std::array<double, 2> rates(double t, const std::array<double, 2>& s) const {
     return {s[1], D / (m * std::sin(phi0)) - 2 * ddot(t) * s[1] / d(t)};
   }
 };
-
-std::array<double, 2> rk4(std::array<double, 2> s, double t0, double t1, int n,
-                          const ConeOnSphere& c) {
-  const double h = (t1 - t0) / n;
-  for (int i = 0; i < n; ++i) {
-    const double t = t0 + i * h;
-    const auto k1 = c.rates(t, s);
-    const auto k2 = c.rates(t + h / 2, {s[0] + h / 2 * k1[0], s[1] + h / 2 * k1[1]});
-    const auto k3 = c.rates(t + h / 2, {s[0] + h / 2 * k2[0], s[1] + h / 2 * k2[1]});
-    const auto k4 = c.rates(t + h, {s[0] + h * k3[0], s[1] + h * k3[1]});
-    for (int j = 0; j < 2; ++j) s[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-  }
-  return s;
-}
 
 // §3.5, φ̇ = 0: the particle moves on the circle of radius d(t) sin φ0 at height d(t) cos φ0 (the
 // book's closed form, d typed here), with θ(t), θ̇(t) from the hand-reduced θ-row above by RK4
@@ -86,19 +78,14 @@ std::array<double, 2> rk4(std::array<double, 2> s, double t0, double t1, int n,
 TEST(ExpandingSphere, ConeConstraintGivesTheCircleOfRadiusDSinPhi0) {
   const test::ModelRun run = test::run_system(parse_model(kConeSphere, "cone-sphere.yaml"));
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
-  const ConeOnSphere c{run.parameter("m"),
-                       run.parameter("g"),
-                       run.parameter("D"),
-                       run.parameter("d0"),
-                       run.parameter("a"),
-                       run.parameter("w"),
-                       2.0};
+  const ConeOnSphere c = ConeOnSphere::of(run, 2.0);
   const double sp = std::sin(c.phi0), cp = std::cos(c.phi0);
   std::array<double, 2> s{0.0, 1.5};
   double t = 0, circle_error = 0, theta_error = 0, lambda_error = 0;
   for (std::size_t k = 1; k < run.rows.size(); ++k) {
     const double t1 = run.at(k, "t");
-    s = rk4(s, t, t1, 100, c);
+    s = test::rk4(s, t, t1, 100,
+                  [&c](double tau, const std::array<double, 2>& q) { return c.rates(tau, q); });
     t = t1;
     const double d = c.d(t), x = run.at(k, "x"), y = run.at(k, "y");
     circle_error = std::max(
@@ -138,29 +125,15 @@ std::array<double, 4> sphere_rates(double t, const std::array<double, 4>& s,
 TEST(ExpandingSphere, MotionAgainstBothRowsOf310ByRk4) {
   const test::ModelRun run = test::run_model("expanding-sphere");
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
-  const ConeOnSphere c{run.parameter("m"),
-                       run.parameter("g"),
-                       run.parameter("D"),
-                       run.parameter("d0"),
-                       run.parameter("a"),
-                       run.parameter("w"),
-                       0.0};
+  const ConeOnSphere c = ConeOnSphere::of(run, 0.0);
   std::array<double, 4> s{run.at(0, "theta"), run.at(0, "der(theta)"), run.at(0, "phi"),
                           run.at(0, "der(phi)")};
   double t = 0, motion_error = 0, lambda_error = 0;
   for (std::size_t k = 1; k < run.rows.size(); ++k) {
-    const double t1 = run.at(k, "t"), h = (t1 - t) / 10;
-    auto add = [](const std::array<double, 4>& x, const std::array<double, 4>& q, double f) {
-      return std::array<double, 4>{x[0] + f * q[0], x[1] + f * q[1], x[2] + f * q[2],
-                                   x[3] + f * q[3]};
-    };
-    for (int i = 0; i < 10; ++i, t += h) {
-      const auto k1 = sphere_rates(t, s, c);
-      const auto k2 = sphere_rates(t + h / 2, add(s, k1, h / 2), c);
-      const auto k3 = sphere_rates(t + h / 2, add(s, k2, h / 2), c);
-      const auto k4 = sphere_rates(t + h, add(s, k3, h), c);
-      for (int j = 0; j < 4; ++j) s[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-    }
+    const double t1 = run.at(k, "t");
+    s = test::rk4(s, t, t1, 10, [&c](double tau, const std::array<double, 4>& q) {
+      return sphere_rates(tau, q, c);
+    });
     t = t1;
     motion_error =
         std::max({motion_error, std::abs(run.at(k, "theta") - s[0]),

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "support/model_run.hpp"
+#include "support/rk4.hpp"
 #include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
@@ -64,23 +65,6 @@ struct SteeredHelicoid {
   }
 };
 
-std::array<double, 3> rk4(std::array<double, 3> s, double t0, double t1, int n,
-                          const SteeredHelicoid& p) {
-  const double h = (t1 - t0) / n;
-  auto add = [](const std::array<double, 3>& a, const std::array<double, 3>& k, double f) {
-    return std::array<double, 3>{a[0] + f * k[0], a[1] + f * k[1], a[2] + f * k[2]};
-  };
-  for (int i = 0; i < n; ++i) {
-    const double t = t0 + i * h;
-    const auto k1 = p.rates(t, s);
-    const auto k2 = p.rates(t + h / 2, add(s, k1, h / 2));
-    const auto k3 = p.rates(t + h / 2, add(s, k2, h / 2));
-    const auto k4 = p.rates(t + h, add(s, k3, h));
-    for (int j = 0; j < 3; ++j) s[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-  }
-  return s;
-}
-
 // Exercise 3.5 (c): r(t), ṙ(t), θ(t), θ̇(t) of the run against the hand-reduced r̈ = h²/r,
 // θ̇ = −h/r above by RK4 (h = 1e-4 s); the multipliers λ1 (helicoid), λ2 (steer) and the
 // constraint force m a − F (the run's P.constraint_force, from its acceleration) against the hand
@@ -95,7 +79,8 @@ TEST(Helicoid, PartCWithTheConstraintRThetaDotPlusHAgainstHandReducedEquationsBy
   double t = 0, motion_error = 0, multiplier_error = 0, force_error = 0;
   for (std::size_t k = 1; k < run.rows.size(); ++k) {
     const double t1 = run.at(k, "t");
-    s = rk4(s, t, t1, 100, p);
+    s = test::rk4(s, t, t1, 100,
+                  [&p](double tau, const std::array<double, 3>& q) { return p.rates(tau, q); });
     t = t1;
     const double r = s[0], rdot = s[1], thetadot = -p.h(t) / r;
     motion_error = std::max(

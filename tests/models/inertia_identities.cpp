@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "support/model_run.hpp"
+#include "support/rigid_kinematics.hpp"
 #include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
@@ -53,9 +54,8 @@ Mat product(const Mat& A, const Mat& B) {
   return C;
 }
 
-// What the test computes from one row, from the Euler parameters (e0, e) and their rates alone:
-// e_i = Q E_i with Q a = (e0² − e·e) a + 2 (e·a) e + 2 e0 e × a, ω = 2 (e0 ė − ė0 e + e × ė),
-// J = Σ λ_i e_i ⊗ e_i (7.23) and H = Jω.
+// What the test computes from one row: e_i and ω from the Euler parameters and their rates alone
+// (support/rigid_kinematics.hpp), J = Σ λ_i e_i ⊗ e_i (7.23) and H = Jω.
 struct RowInertia {
   std::array<Vec, 3> basis;
   Vec omega, H;
@@ -63,20 +63,10 @@ struct RowInertia {
 };
 
 RowInertia inertia(const test::ModelRun& run, std::size_t k, const Vec& lambda) {
-  const double e0 = run.at(k, "e0"), e0dot = run.at(k, "der(e0)");
-  const Vec e{run.at(k, "e1"), run.at(k, "e2"), run.at(k, "e3")};
-  const Vec edot{run.at(k, "der(e1)"), run.at(k, "der(e2)"), run.at(k, "der(e3)")};
+  const test::EulerParameterKinematics q = test::euler_parameter_kinematics(run, k);
   RowInertia r;
-  for (int i = 0; i < 3; ++i) {
-    Vec E{0, 0, 0};
-    E[i] = 1;
-    const Vec ea = cross(e, E);
-    for (int j = 0; j < 3; ++j) {
-      r.basis[i][j] = (e0 * e0 - dot(e, e)) * E[j] + 2 * dot(e, E) * e[j] + 2 * e0 * ea[j];
-    }
-  }
-  const Vec c = cross(e, edot);
-  for (int j = 0; j < 3; ++j) r.omega[j] = 2 * (e0 * edot[j] - e0dot * e[j] + c[j]);
+  r.basis = q.basis;
+  r.omega = q.omega;
   for (int p = 0; p < 3; ++p) {
     for (int n = 0; n < 3; ++n) {
       r.J[p][n] = 0;

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "support/model_run.hpp"
+#include "support/rigid_kinematics.hpp"
+#include "support/rk4.hpp"
 #include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
@@ -37,25 +39,6 @@ Vec cross(const Vec& a, const Vec& b) {
 }
 double norm(const Vec& a) {
   return std::sqrt(dot(a, a));
-}
-
-// Classical RK4 of ṡ = rates(s) (autonomous) from 0 to `duration` in n steps.
-template <std::size_t N, class Rates>
-std::array<double, N> rk4(std::array<double, N> s, double duration, int n, const Rates& rates) {
-  const double h = duration / n;
-  auto add = [](const std::array<double, N>& x, const std::array<double, N>& k, double f) {
-    std::array<double, N> y;
-    for (std::size_t j = 0; j < N; ++j) y[j] = x[j] + f * k[j];
-    return y;
-  };
-  for (int i = 0; i < n; ++i) {
-    const std::array<double, N> k1 = rates(s);
-    const std::array<double, N> k2 = rates(add(s, k1, h / 2));
-    const std::array<double, N> k3 = rates(add(s, k2, h / 2));
-    const std::array<double, N> k4 = rates(add(s, k3, h));
-    for (std::size_t j = 0; j < N; ++j) s[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-  }
-  return s;
 }
 
 // §9.6 and Ex. 9.8 with ω constant (M = 0, H = (2/5) m R² ω, so ω(t) = ω(t0)): the centre of mass
@@ -103,8 +86,8 @@ Errors compare_with_rk4(const test::ModelRun& run, const Flight& f) {
   double t = 0;
   for (std::size_t k = 250; k < run.rows.size(); k += 250) {
     const double t1 = run.at(k, "t");
-    s = rk4(s, t1 - t, static_cast<int>(std::lround((t1 - t) / 1e-4)),
-            [&](const std::array<double, 6>& y) { return f.rates(y); });
+    s = test::rk4(s, t, t1, static_cast<int>(std::lround((t1 - t) / 1e-4)),
+                  [&f](double, const std::array<double, 6>& y) { return f.rates(y); });
     t = t1;
     for (int j = 0; j < 3; ++j) {
       e.position = std::max(e.position, std::abs(run.at(k, position[j]) - s[j]));
@@ -147,29 +130,12 @@ TEST(PoweredFlight, SpinningBallWithDragAgreesWithRk4) {
               e.velocity);
 }
 
-// What the test computes from one row of a ball turned by Euler parameters (e0, e): the basis
-// e_i = Q E_i with Q a = (e0² − e·e) a + 2 (e·a) e + 2 e0 e × a, and ω = 2 (e0 ė − ė0 e + e × ė).
-struct BallPose {
-  std::array<Vec, 3> basis;
-  Vec omega;
-};
+// What the test computes from one row of a ball turned by Euler parameters: its basis e_i and ω
+// from the Euler parameters and their rates alone (support/rigid_kinematics.hpp).
+using BallPose = test::EulerParameterKinematics;
 
 BallPose pose(const test::ModelRun& run, std::size_t k) {
-  const double e0 = run.at(k, "e0"), e0dot = run.at(k, "der(e0)");
-  const Vec e{run.at(k, "e1"), run.at(k, "e2"), run.at(k, "e3")};
-  const Vec edot{run.at(k, "der(e1)"), run.at(k, "der(e2)"), run.at(k, "der(e3)")};
-  BallPose p;
-  for (int i = 0; i < 3; ++i) {
-    Vec E{0, 0, 0};
-    E[i] = 1;
-    const Vec ea = cross(e, E);
-    for (int j = 0; j < 3; ++j) {
-      p.basis[i][j] = (e0 * e0 - dot(e, e)) * E[j] + 2 * dot(e, E) * e[j] + 2 * e0 * ea[j];
-    }
-  }
-  const Vec c = cross(e, edot);
-  for (int j = 0; j < 3; ++j) p.omega[j] = 2 * (e0 * edot[j] - e0dot * e[j] + c[j]);
-  return p;
+  return test::euler_parameter_kinematics(run, k);
 }
 
 // The ball of §9.6 free to turn (Euler parameters, Q(0) = I), with drag and the Magnus force and
@@ -278,9 +244,10 @@ struct BodyFixedFlight {
 };
 
 // Ex. 9.8 (the book's body-fixed thrust f e1 at π_t, so M = π_t × f e1 ≠ 0): x̄, v̄, ω and e1
-// against the RK4 above of the book's F and M, every 0.25 s over 4 s; and (c): Ė = the thrust's
-// power f e1·(v̄ + ω × π_t) + the drag's power (the Magnus force, normal to v̄, does none) — E and
-// the powers computed here from the rows, E(t) − E(0) against their integral by Simpson's rule.
+// against RK4 in the test of the book's F and M above, every 0.25 s over 4 s; and (c): Ė = the
+// thrust's power f e1·(v̄ + ω × π_t) + the drag's power (the Magnus force, normal to v̄, does
+// none) — E and the powers computed here from the rows, E(t) − E(0) against their integral by
+// Simpson's rule.
 TEST(PoweredFlight, BodyFixedThrustOfExercise98AgreesWithRk4) {
   const test::ModelRun run =
       test::run_system(parse_model(kBodyFixedThrust, "body-fixed-thrust.yaml"));
@@ -312,8 +279,8 @@ TEST(PoweredFlight, BodyFixedThrustOfExercise98AgreesWithRk4) {
   double t = 0, position_error = 0, velocity_error = 0, omega_error = 0, basis_error = 0;
   for (std::size_t k = 250; k < run.rows.size(); k += 250) {
     const double t1 = run.at(k, "t");
-    s = rk4(s, t1 - t, static_cast<int>(std::lround((t1 - t) / 1e-4)),
-            [&](const std::array<double, 18>& y) { return book.rates(y); });
+    s = test::rk4(s, t, t1, static_cast<int>(std::lround((t1 - t) / 1e-4)),
+                  [&book](double, const std::array<double, 18>& y) { return book.rates(y); });
     t = t1;
     const std::array<double, 18> r = state(k);
     for (int j = 0; j < 3; ++j) {

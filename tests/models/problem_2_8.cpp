@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "support/model_run.hpp"
+#include "support/rk4.hpp"
 #include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
@@ -54,24 +55,6 @@ struct Problem28 {
   }
 };
 
-std::array<double, 4> rk4(std::array<double, 4> s, double t0, double t1, int n,
-                          const Problem28& p) {
-  const double h = (t1 - t0) / n;
-  auto add = [](const std::array<double, 4>& a, const std::array<double, 4>& k, double f) {
-    return std::array<double, 4>{a[0] + f * k[0], a[1] + f * k[1], a[2] + f * k[2],
-                                 a[3] + f * k[3]};
-  };
-  for (int i = 0; i < n; ++i) {
-    const double t = t0 + i * h;
-    const auto k1 = p.rates(t, s);
-    const auto k2 = p.rates(t + h / 2, add(s, k1, h / 2));
-    const auto k3 = p.rates(t + h / 2, add(s, k2, h / 2));
-    const auto k4 = p.rates(t + h, add(s, k3, h));
-    for (int j = 0; j < 4; ++j) s[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-  }
-  return s;
-}
-
 // Problem 2.8 (b), (c): the run's x, y, z and the multipliers μ1 = lambda(first), μ2 =
 // lambda(second) against the hand-reduced equations above by RK4 (h = 1e-4 s); E(t) − E(0) from
 // the run's rows against W(t) = ∫ F_c·v dt computed along the hand solution; E changes by more
@@ -90,7 +73,8 @@ TEST(Problem28Motion, MotionMultipliersAndEnergyChangeAgainstHandReducedEquation
   double largest_change = 0;
   for (std::size_t k = 1; k < run.rows.size(); ++k) {
     const double t1 = run.at(k, "t");
-    s = rk4(s, t, t1, 100, p);
+    s = test::rk4(s, t, t1, 100,
+                  [&p](double tau, const std::array<double, 4>& q) { return p.rates(tau, q); });
     t = t1;
     position_error = std::max({position_error, std::abs(run.at(k, "x") - s[0]),
                                std::abs(run.at(k, "y") - s[1]), std::abs(run.at(k, "z") - s[2])});

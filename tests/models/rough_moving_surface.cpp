@@ -17,6 +17,7 @@
 #include <Eigen/Dense>
 
 #include "support/model_run.hpp"
+#include "support/rk4.hpp"
 
 namespace unidyn {
 namespace {
@@ -162,23 +163,6 @@ SlideState slide_rates(double t, const SlideState& s, const MovingSurface& S, do
   return {s[2], s[3], rdd.x(), rdd.y()};
 }
 
-// Classical RK4 from t0 to t1 in n steps.
-SlideState rk4(SlideState s, double t0, double t1, int n, const MovingSurface& S, double mu_d) {
-  const double h = (t1 - t0) / n;
-  auto add = [](const SlideState& a, const SlideState& k, double f) {
-    return SlideState{a[0] + f * k[0], a[1] + f * k[1], a[2] + f * k[2], a[3] + f * k[3]};
-  };
-  for (int i = 0; i < n; ++i) {
-    const double t = t0 + i * h;
-    const SlideState k1 = slide_rates(t, s, S, mu_d);
-    const SlideState k2 = slide_rates(t + h / 2, add(s, k1, h / 2), S, mu_d);
-    const SlideState k3 = slide_rates(t + h / 2, add(s, k2, h / 2), S, mu_d);
-    const SlideState k4 = slide_rates(t + h, add(s, k3, h), S, mu_d);
-    for (int j = 0; j < 4; ++j) s[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-  }
-  return s;
-}
-
 // Ex. 3.4(a): the particle SLIDING on the moving surface (μ_s = μ_d = 0.1, thrown at
 // (q̇1, q̇2) = (−2, 1) m/s from the model's start), against the Cartesian equations above
 // integrated here by RK4: the coordinates q1 = x, q2 = y, q3 = z − x²/2 − x y = d(t), their rates,
@@ -200,7 +184,8 @@ TEST(RoughMovingSurface, SlidingMotionNormalForceAndFrictionAgreeWithCartesianRk
     const double t1 = run.at(k, "t");
     if (t1 > t) {
       const double x0 = s[0], y0 = s[1];
-      s = rk4(s, t, t1, 10, S, mu_d);
+      s = test::rk4(s, t, t1, 10,
+                    [&](double tau, const SlideState& q) { return slide_rates(tau, q, S, mu_d); });
       travelled += std::hypot(s[0] - x0, s[1] - y0);
       t = t1;
     }

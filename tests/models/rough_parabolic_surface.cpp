@@ -11,6 +11,7 @@
 #include <string>
 
 #include "support/model_run.hpp"
+#include "support/rk4.hpp"
 #include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
@@ -79,21 +80,6 @@ struct BookParabola {
   }
 };
 
-// Classical RK4 in n steps of h.
-BookState rk4(BookState s, double h, int n, const BookParabola& P) {
-  auto add = [](const BookState& a, const BookState& k, double f) {
-    return BookState{a[0] + f * k[0], a[1] + f * k[1], a[2] + f * k[2], a[3] + f * k[3]};
-  };
-  for (int i = 0; i < n; ++i) {
-    const BookState k1 = P.rates(s);
-    const BookState k2 = P.rates(add(s, k1, h / 2));
-    const BookState k3 = P.rates(add(s, k2, h / 2));
-    const BookState k4 = P.rates(add(s, k3, h));
-    for (int j = 0; j < 4; ++j) s[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-  }
-  return s;
-}
-
 // Ex. 3.8(a): the model's run against the book's equations in the coordinates (1.6) written above
 // and integrated here by RK4 from the model's start (q1 = 1.5, q̇1 = 0.5, q3 = 0, q̇3 = 2): q1, q3,
 // their rates, x = q1² − 4, the multiplier λ, the contact force's normal part λ |a^2| and its
@@ -113,7 +99,7 @@ TEST(RoughParabolicSurface, MotionNormalForceAndFrictionAgreeWithBookEquationsBy
   for (std::size_t k = 0; k < run.rows.size(); ++k) {
     const double t1 = run.at(k, "t");
     if (t1 > t) {
-      s = rk4(s, (t1 - t) / 20, 20, P);
+      s = test::rk4(s, t, t1, 20, [&P](double, const BookState& q) { return P.rates(q); });
       t = t1;
     }
     position_error =

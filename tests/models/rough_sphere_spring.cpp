@@ -6,6 +6,7 @@
 #include <string>
 
 #include "support/model_run.hpp"
+#include "support/rk4.hpp"
 
 namespace unidyn {
 namespace {
@@ -101,21 +102,6 @@ State sliding_rates(const Data& d, const State& s) {
   return {s[1], phi_dd, s[3], theta_dd};
 }
 
-// Classical RK4, n steps of h.
-State rk4(const Data& d, State s, double h, int n) {
-  auto add = [](const State& u, const State& k, double f) {
-    return State{u[0] + f * k[0], u[1] + f * k[1], u[2] + f * k[2], u[3] + f * k[3]};
-  };
-  for (int i = 0; i < n; ++i) {
-    const State k1 = sliding_rates(d, s);
-    const State k2 = sliding_rates(d, add(s, k1, h / 2));
-    const State k3 = sliding_rates(d, add(s, k2, h / 2));
-    const State k4 = sliding_rates(d, add(s, k3, h));
-    for (int j = 0; j < 4; ++j) s[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-  }
-  return s;
-}
-
 // 2.7(d), (e), (g): the run (x, y, z with the sphere's multiplier, dopri5 at rtol 1e-12) against
 // the book's sliding equations (d) in (φ, θ), integrated here by RK4 from the run's first row, with
 // N from (e) computed here. Compared every 0.1 s over the 4 s (it slides throughout, |v| ≥ 1.6):
@@ -141,12 +127,13 @@ TEST(RoughSphereSpring, SlidingAgreesWithTheBooksEquationsByRk4) {
     return d.m / 2 * d.R0 * d.R0 * (u[1] * u[1] + sp * sp * u[3] * u[3]) +
            d.m * d.g * d.R0 * geo.eR[2] + d.K / 2 * (length - d.L0) * (length - d.L0);
   };
+  const auto rates = [&d](double, const State& u) { return sliding_rates(d, u); };
   const double h = 2.5e-5;  // RK4 step: 4000 steps between compared rows
   double position_error = 0, velocity_error = 0, normal_error = 0, energy_error = 0, rate_error = 0;
   double normal_min = 1e300, normal_max = -1e300, rate_max = -1e300;
   std::size_t compared = 0;
   for (std::size_t k = 0; k < run.rows.size(); k += 100) {
-    if (k > 0) s = rk4(d, s, h, 4000);
+    if (k > 0) s = test::rk4(s, 0.0, 4000 * h, 4000, rates);
     ASSERT_NEAR(run.at(k, "t"), 1e-3 * static_cast<double>(k), 1e-12);
     const Geometry geo(d, s[0], s[2]);
     const Vec r = geo.position(d);
@@ -169,7 +156,9 @@ TEST(RoughSphereSpring, SlidingAgreesWithTheBooksEquationsByRk4) {
     // (g): Ė by central differences of E along the RK4 motion (±10 steps) against −μ_d |N| |v|
     const double slip = std::sqrt(s[1] * s[1] + sp * sp * s[3] * s[3]);
     const double power = -d.mu_d * std::abs(N) * d.R0 * slip;
-    const double Edot = (energy(rk4(d, s, h, 10)) - energy(rk4(d, s, -h, 10))) / (20 * h);
+    const double Edot = (energy(test::rk4(s, 0.0, 10 * h, 10, rates)) -
+                         energy(test::rk4(s, 0.0, -10 * h, 10, rates))) /
+                        (20 * h);
     rate_error = std::max(rate_error, std::abs(Edot - power));
     rate_max = std::max(rate_max, Edot);
     ++compared;

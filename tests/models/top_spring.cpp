@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "support/model_run.hpp"
+#include "support/rk4.hpp"
 #include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
@@ -248,7 +249,7 @@ TEST(TopSpring, LagrangesEquationsInEulerAnglesAreEquation936OfExercise107) {
 
   // (2) an RK4 of (9.36) and the kinematic matrix
   using State = std::array<double, 6>;
-  const auto rates = [&](const State& s) {
+  const auto rates = [&](double, const State& s) {
     const Vec w{s[3], s[4], s[5]};
     const Vec angles = angle_rates_313(s[1], s[2], w);
     const Vec M = fig.moment_about_O(basis_313(s[0], s[1], s[2]));
@@ -260,23 +261,13 @@ TEST(TopSpring, LagrangesEquationsInEulerAnglesAreEquation936OfExercise107) {
                  ((fig.l3 - fig.l1 - mh2) * w[0] * w[2] + M[1]) / (fig.l2 + mh2),
                  ((fig.l1 - fig.l2) * w[0] * w[1] + M[2]) / fig.l3};
   };
-  const auto add = [](const State& x, const State& k, double f) {
-    State y;
-    for (std::size_t i = 0; i < 6; ++i) y[i] = x[i] + f * k[i];
-    return y;
-  };
   const Vec w0 = omega_313(run.at(0, "theta"), run.at(0, "phi"), run.at(0, "der(psi)"),
                            run.at(0, "der(theta)"), run.at(0, "der(phi)"));
   State s{run.at(0, "psi"), run.at(0, "theta"), run.at(0, "phi"), w0[0], w0[1], w0[2]};
   const int substeps = 20;  // 0.5 ms
   double worst_angle = 0, worst_rate = 0;
   for (std::size_t k = 1; k < run.rows.size(); ++k) {
-    const double h = (run.at(k, "t") - run.at(k - 1, "t")) / substeps;
-    for (int i = 0; i < substeps; ++i) {
-      const State k1 = rates(s), k2 = rates(add(s, k1, h / 2)), k3 = rates(add(s, k2, h / 2)),
-                  k4 = rates(add(s, k3, h));
-      for (std::size_t j = 0; j < 6; ++j) s[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-    }
+    s = test::rk4(s, run.at(k - 1, "t"), run.at(k, "t"), substeps, rates);
     const Vec angle_rates = angle_rates_313(s[1], s[2], Vec{s[3], s[4], s[5]});
     const char* names[3] = {"psi", "theta", "phi"};
     for (std::size_t j = 0; j < 3; ++j) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "support/model_run.hpp"
+#include "support/rk4.hpp"
 
 namespace unidyn {
 namespace {
@@ -48,23 +49,6 @@ SphericalState spherical_rates(double t, const SphericalState& s, const String& 
           -2 * s[3] * (Rdot * sp + R * cp * s[1]) / (R * sp)};
 }
 
-// Classical RK4 from t0 to t1 in n steps.
-SphericalState rk4(SphericalState s, double t0, double t1, int n, const String& string, double g) {
-  const double h = (t1 - t0) / n;
-  auto add = [](const SphericalState& x, const SphericalState& k, double f) {
-    return SphericalState{x[0] + f * k[0], x[1] + f * k[1], x[2] + f * k[2], x[3] + f * k[3]};
-  };
-  for (int i = 0; i < n; ++i) {
-    const double t = t0 + i * h;
-    const SphericalState k1 = spherical_rates(t, s, string, g);
-    const SphericalState k2 = spherical_rates(t + h / 2, add(s, k1, h / 2), string, g);
-    const SphericalState k3 = spherical_rates(t + h / 2, add(s, k2, h / 2), string, g);
-    const SphericalState k4 = spherical_rates(t + h, add(s, k3, h), string, g);
-    for (int j = 0; j < 4; ++j) s[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
-  }
-  return s;
-}
-
 // §2.7, Fig. 1.7b: the motion and the string's multiplier against the spherical equations above,
 // integrated here by RK4 from the model's initial state (φ0 = π − 1, θ̇0 = 2/(L sin 1), Ṙ0 = aω).
 TEST(VariableLengthPendulum, MotionAndStringForceAgreeWithSphericalEquationsByRk4) {
@@ -78,7 +62,9 @@ TEST(VariableLengthPendulum, MotionAndStringForceAgreeWithSphericalEquationsByRk
   double t = 0, position_error = 0, lambda_error = 0;
   for (std::size_t k = 250; k < run.rows.size(); k += 250) {
     const double t1 = run.at(k, "t");
-    s = rk4(s, t, t1, 2000, string, g);
+    s = test::rk4(s, t, t1, 2000, [&](double tau, const SphericalState& q) {
+      return spherical_rates(tau, q, string, g);
+    });
     t = t1;
     const double R = string.length(t), sp = std::sin(s[0]), cp = std::cos(s[0]);
     const double x = R * sp * std::cos(s[2]), y = R * sp * std::sin(s[2]), z = R * cp;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "support/model_run.hpp"
+#include "support/rigid_kinematics.hpp"
 #include "unidyn/io/model_file.hpp"
 
 namespace unidyn {
@@ -33,35 +34,17 @@ using Vec = std::array<double, 3>;
 double dot(const Vec& a, const Vec& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
-Vec cross(const Vec& a, const Vec& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
-// What the test computes from one row, from the Euler parameters (e0, e) and their rates alone:
-// the body's basis e_i = Q E_i with Q a = (e0² − e·e) a + 2 (e·a) e + 2 e0 e × a, and
-// ω = 2 (e0 ė − ė0 e + e × ė).
+// What the test computes from one row: the body's basis e_i and ω from the Euler parameters and
+// their rates alone (support/rigid_kinematics.hpp), and v̄.
 struct RowKinematics {
   std::array<Vec, 3> basis;
   Vec omega, velocity;
 };
 
 RowKinematics kinematics(const test::ModelRun& run, std::size_t k) {
-  const double e0 = run.at(k, "e0"), e0dot = run.at(k, "der(e0)");
-  const Vec e{run.at(k, "e1"), run.at(k, "e2"), run.at(k, "e3")};
-  const Vec edot{run.at(k, "der(e1)"), run.at(k, "der(e2)"), run.at(k, "der(e3)")};
-  RowKinematics r;
-  for (int i = 0; i < 3; ++i) {
-    Vec E{0, 0, 0};
-    E[i] = 1;
-    const Vec ea = cross(e, E);
-    for (int j = 0; j < 3; ++j) {
-      r.basis[i][j] = (e0 * e0 - dot(e, e)) * E[j] + 2 * dot(e, E) * e[j] + 2 * e0 * ea[j];
-    }
-  }
-  const Vec c = cross(e, edot);
-  for (int j = 0; j < 3; ++j) r.omega[j] = 2 * (e0 * edot[j] - e0dot * e[j] + c[j]);
-  r.velocity = {run.at(k, "der(x)"), run.at(k, "der(y)"), run.at(k, "der(z)")};
-  return r;
+  const test::EulerParameterKinematics q = test::euler_parameter_kinematics(run, k);
+  return {q.basis, q.omega, {run.at(k, "der(x)"), run.at(k, "der(y)"), run.at(k, "der(z)")}};
 }
 
 // T = ½ m v̄·v̄ + ½ H·ω with H = Σ λ_i (ω·e_i) e_i, so H·ω = Σ λ_i (ω·e_i)², and Ṫ = F·v̄ + M·ω
