@@ -1,14 +1,19 @@
 // Validation of models/double-pendulum.yaml (Exercise 4.1(d), the planar double pendulum; §5 (5.19)
 // in the notes): its small oscillations against the normal modes of the linearised equations, its
-// energy, and an independent integration of the textbook equations written here.
+// energy, and an independent integration of the textbook equations written here; and Exercise
+// 5.4's three constraints on the representative point, with (e)'s non-integrable fourth.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <iomanip>
+#include <iterator>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "support/model_run.hpp"
 #include "support/oracles.hpp"
@@ -248,6 +253,204 @@ TEST(DoublePendulum, ThreeConstraintsOnTheRepresentativePointOfExercise54) {
     EXPECT_NEAR(constrained.at(i, "phi2"), half_pi, 1e-12);
     EXPECT_NEAR(constrained.at(i, "z1"), 0.0, 1e-12);
   }
+}
+
+// Exercise 5.4(e): a non-integrable constraint f1 · v1 + f2 · v2 + e = 0 added to the three of
+// double-pendulum-constrained.yaml. Here f1 = 0, f2 = E3 × (x2 − x1) and e constant: the part of
+// m2's velocity along the horizontal E3 × (x2 − x1) is held at −e/(L0 sin φ2). With a = θ1, p = φ2,
+// b = θ2, d = b − a, S = sin p, C = cos p (r1 = L1, z1 = 0, R2 = L0),
+//   v2 = L1 ȧ e_θ1 + L0 (ṗ e_φ2 + S ḃ e_θ2),  e_θ1 · e_φ2 = C sin d,  e_θ1 · e_θ2 = cos d,
+// and the constraint is L0 S (L1 cos d ȧ + L0 S ḃ) + e = 0, i.e. A · q̇ + e = 0 with
+// A = (L0 L1 S cos d, 0, L0² S²) = L0 S a, a = (L1 cos d, 0, L0 S), rot a = (L0 C, −L1 sin d, 0):
+// a · rot a = L0 L1 C cos d ≠ 0 off the plane, so the constraint is not integrable (Frobenius).
+// By hand (k = m2 L1 L0), T̃ = ½(m1+m2) L1² ȧ² + ½ m2 L0² (ṗ² + S² ḃ²) + k ȧ (C sin d ṗ + S cos d
+// ḃ), Ũ = (m1+m2) g L1 sin a + m2 g L0 S sin b (gravity −g E2), and Lagrange's equations with the
+// multiplier, d/dt(∂T̃/∂q̇) − ∂T̃/∂q = −∂Ũ/∂q + μ A:
+//   (m1+m2) L1² ä + k C sin d p̈ + k S cos d b̈ + k (2 C cos d ṗ ḃ − S sin d (ṗ² + ḃ²))
+//       = −(m1+m2) g L1 cos a + μ L0 L1 S cos d,
+//   k C sin d ä + m2 L0² p̈ − k C cos d ȧ² − m2 L0² S C ḃ² = −m2 g L0 C sin b,
+//   k S cos d ä + m2 L0² S² b̈ + 2 m2 L0² S C ṗ ḃ + k S sin d ȧ² = −m2 g L0 S cos b + μ L0² S²,
+// closed by A · q̈ = −L0 L1 ȧ (C ṗ cos d − S sin d ḋ) − 2 L0² S C ṗ ḃ (the constraint's rate), and
+// F_c2 = μ f2, F_c1 = μ f1 = 0 (§5.2). (At p = π/2 with ṗ = 0 these are (5.19) with one more
+// force.)
+using Pendulum54State = std::array<double, 6>;  // a, p, b, ȧ, ṗ, ḃ
+
+struct Pendulum54 {
+  double m1, m2, L1, L0, g, e;
+  bool extra = true;  // false: (d)'s equations, without the fourth constraint (μ = 0)
+
+  // q̈ and μ from the equations above.
+  std::pair<Eigen::Vector3d, double> accelerations(const Pendulum54State& y) const {
+    const double a = y[0], p = y[1], b = y[2], ad = y[3], pd = y[4], bd = y[5], d = b - a;
+    const double S = std::sin(p), C = std::cos(p), k = m2 * L1 * L0;
+    Eigen::Matrix4d K = Eigen::Matrix4d::Zero();
+    K(0, 0) = (m1 + m2) * L1 * L1;
+    K(0, 1) = K(1, 0) = k * C * std::sin(d);
+    K(0, 2) = K(2, 0) = k * S * std::cos(d);
+    K(1, 1) = m2 * L0 * L0;
+    K(2, 2) = m2 * L0 * L0 * S * S;
+    const Eigen::Vector3d A(L0 * L1 * S * std::cos(d), 0.0, L0 * L0 * S * S);
+    K.block<3, 1>(0, 3) = -A;
+    K.block<1, 3>(3, 0) = A.transpose();
+    Eigen::Vector4d rhs;
+    rhs << -k * (2 * C * std::cos(d) * pd * bd - S * std::sin(d) * (pd * pd + bd * bd)) -
+               (m1 + m2) * g * L1 * std::cos(a),
+        k * C * std::cos(d) * ad * ad + m2 * L0 * L0 * S * C * bd * bd -
+            m2 * g * L0 * C * std::sin(b),
+        -2 * m2 * L0 * L0 * S * C * pd * bd - k * S * std::sin(d) * ad * ad -
+            m2 * g * L0 * S * std::cos(b),
+        -L0 * L1 * ad * (C * pd * std::cos(d) - S * std::sin(d) * (bd - ad)) -
+            2 * L0 * L0 * S * C * pd * bd;
+    if (!extra) return {K.topLeftCorner<3, 3>().partialPivLu().solve(rhs.head<3>()), 0.0};
+    const Eigen::Vector4d x = K.partialPivLu().solve(rhs);
+    return {x.head<3>(), x[3]};
+  }
+
+  Pendulum54State rates(const Pendulum54State& y) const {
+    const Eigen::Vector3d qdd = accelerations(y).first;
+    return {y[3], y[4], y[5], qdd[0], qdd[1], qdd[2]};
+  }
+
+  Pendulum54State rk4(Pendulum54State y, double h, int n) const {
+    const auto add = [](const Pendulum54State& x, const Pendulum54State& r, double f) {
+      Pendulum54State z;
+      for (std::size_t j = 0; j < z.size(); ++j) z[j] = x[j] + f * r[j];
+      return z;
+    };
+    for (int i = 0; i < n; ++i) {
+      const Pendulum54State k1 = rates(y), k2 = rates(add(y, k1, h / 2)),
+                            k3 = rates(add(y, k2, h / 2)), k4 = rates(add(y, k3, h));
+      for (std::size_t j = 0; j < y.size(); ++j)
+        y[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+    }
+    return y;
+  }
+};
+
+// Exercise 5.4(e) run: the model file with m2 = 0.6, L0 = 0.7 (so that no factor of the masses
+// or lengths can hide), the constraint above with e = 0.1 added and outputs of its forces on P1
+// and P2, started in the plane but moving out of it (φ̇2 = 0.4; θ̇2 from the constraint). The
+// run's θ1, φ2, θ2, their rates and λ(extra) against the reduced equations above integrated by
+// RK4 (h = 0.1 ms, its error estimated against h = 0.2 ms), and the constraint's forces against
+// F_c1 = 0, F_c2 = μ E3 × (x2 − x1) with the RK4's μ. m2 leaves the plane: φ2 swings between ~1.0
+// and ~2.1.
+TEST(DoublePendulum, ExtraNonIntegrableConstraintOfExercise54e) {
+  const Pendulum54 hand{1.0, 0.6, 1.0, 0.7, 9.81, 0.1};
+  const double half_pi = std::acos(0.0), a0 = 0.5 - half_pi, b0 = -0.3 - half_pi, ad0 = 0.4;
+  // L0 (L1 cos d ȧ + L0 ḃ) + e = 0 at φ2 = π/2
+  const double bd0 = (-hand.e / hand.L0 - hand.L1 * std::cos(b0 - a0) * ad0) / hand.L0;
+  std::ifstream file(test::model_path("double-pendulum-constrained"));
+  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const auto replace_line = [&](const std::string& start, const std::string& by) {
+    const std::size_t from = text.find(start);
+    ASSERT_NE(from, std::string::npos) << start;
+    text.replace(from, text.find('\n', from) - from, by);
+  };
+  std::ostringstream numbers;
+  numbers << std::setprecision(17) << "parameters: {m1: " << hand.m1 << ", m2: " << hand.m2
+          << ", L1: " << hand.L1 << ", L0: " << hand.L0 << ", g: " << hand.g << ", e: " << hand.e
+          << "}";
+  replace_line("parameters:", numbers.str());
+  numbers.str("");
+  numbers << std::setprecision(17) << "  - {name: rod2, position: R2 - L0}\n"
+          << "  - {name: extra, velocity: \"dot(P2.velocity, cross(E3, P2.position - "
+             "P1.position)) + e\"}";
+  replace_line("  - {name: rod2", numbers.str());
+  numbers.str("");
+  numbers << std::setprecision(17) << "initial: {r1: L1, theta1: " << a0
+          << ", R2: L0, phi2: pi/2, theta2: " << b0 << ", der(theta1): " << ad0
+          << ", der(phi2): 0.4, der(theta2): " << bd0 << "}";
+  replace_line("initial:", numbers.str());
+  text += "outputs:\n  F1: extra.force.P1\n  F2: extra.force.P2\n";
+  const System system = parse_model(text, "double-pendulum-54e.yaml");
+  ASSERT_EQ(system.constraints.size(), 4u);
+  const test::ModelRun run =
+      test::run_system(system, {}, [](SimulationOptions& o) { o.t_end = 5.0; });
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  EXPECT_LT(run.summary.max_velocity_residual, 1e-10);
+  ASSERT_EQ(run.parameter("L0"), hand.L0);
+  Pendulum54State fine{run.at(0, "theta1"),      run.at(0, "phi2"),      run.at(0, "theta2"),
+                       run.at(0, "der(theta1)"), run.at(0, "der(phi2)"), run.at(0, "der(theta2)")};
+  Pendulum54State coarse = fine;
+  double rk4_error = 0, angle_error = 0, rate_error = 0, mu_error = 0, force_error = 0;
+  double out_of_plane = 0, largest_mu = 0;
+  for (std::size_t k = 0; k < run.rows.size(); ++k) {
+    ASSERT_NEAR(run.at(k, "t"), 0.01 * static_cast<double>(k), 1e-12);
+    if (k > 0) {
+      fine = hand.rk4(fine, 1e-4, 100);
+      coarse = hand.rk4(coarse, 2e-4, 50);
+    }
+    for (std::size_t j = 0; j < 6; ++j)
+      rk4_error = std::max(rk4_error, std::abs(fine[j] - coarse[j]) / 15.0);
+    angle_error =
+        std::max({angle_error, std::abs(run.at(k, "theta1") - fine[0]),
+                  std::abs(run.at(k, "phi2") - fine[1]), std::abs(run.at(k, "theta2") - fine[2])});
+    rate_error = std::max({rate_error, std::abs(run.at(k, "der(theta1)") - fine[3]),
+                           std::abs(run.at(k, "der(phi2)") - fine[4]),
+                           std::abs(run.at(k, "der(theta2)") - fine[5])});
+    const double mu = hand.accelerations(fine).second;
+    mu_error = std::max(mu_error, std::abs(run.at(k, "lambda(extra)") - mu));
+    // E3 × (x2 − x1) = L0 sin φ2 (−sin θ2, cos θ2, 0)
+    const double S = std::sin(fine[1]);
+    force_error =
+        std::max({force_error, std::abs(run.at(k, "F2.x") + mu * hand.L0 * S * std::sin(fine[2])),
+                  std::abs(run.at(k, "F2.y") - mu * hand.L0 * S * std::cos(fine[2])),
+                  std::abs(run.at(k, "F2.z")), std::abs(run.at(k, "F1.x")),
+                  std::abs(run.at(k, "F1.y")), std::abs(run.at(k, "F1.z"))});
+    out_of_plane = std::max(out_of_plane, std::abs(fine[1] - half_pi));
+    largest_mu = std::max(largest_mu, std::abs(mu));
+  }
+  EXPECT_GT(out_of_plane, 0.4);
+  EXPECT_GT(largest_mu, 0.5);  // the extra constraint does push (m2 g = 5.9 N)
+  ASSERT_LT(rk4_error, 1e-12);
+  // a run at rtol 1e-12 over 5 s, its local errors grown by the flow's sensitivity
+  EXPECT_LT(angle_error, 1e-10);
+  EXPECT_LT(rate_error, 1e-9);
+  EXPECT_LT(mu_error, 1e-9);
+  EXPECT_LT(force_error, 1e-9);
+  std::printf(
+      "Ex. 5.4(e) vs hand RK4 over 5 s (RK4 error %.3g): angles %.3g, rates %.3g rad/s, mu %.3g "
+      "(|mu| up to %.3g), F_c1/F_c2 %.3g N; phi2 leaves pi/2 by %.3g\n",
+      rk4_error, angle_error, rate_error, mu_error, largest_mu, force_error, out_of_plane);
+}
+
+// Exercise 5.4(d): without the fourth constraint (μ = 0), the equations above are (d)'s
+// d/dt(∂T̃/∂q̇) − ∂T̃/∂q = −∂Ũ/∂q in θ1, φ2, θ2. double-pendulum-constrained.yaml as it is, but
+// started out of the plane (φ̇2 = 0.4: m2 swings on its sphere about m1, which the plane holds),
+// against them by RK4 (h = 0.1 ms, error estimated against h = 0.2 ms).
+TEST(DoublePendulum, ThreeConstraintsOfExercise54dAgainstHandEquationsByRk4) {
+  const Pendulum54 hand{1.0, 1.0, 1.0, 1.0, 9.81, 0.0, false};
+  const test::ModelRun run = test::run_model("double-pendulum-constrained", {{"der(phi2)", 0.4}},
+                                             [](SimulationOptions& o) { o.t_end = 5.0; });
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  for (const char* name : {"m1", "m2", "L1", "L0"}) ASSERT_EQ(run.parameter(name), 1.0) << name;
+  ASSERT_EQ(run.parameter("g"), hand.g);
+  Pendulum54State fine{run.at(0, "theta1"),      run.at(0, "phi2"),      run.at(0, "theta2"),
+                       run.at(0, "der(theta1)"), run.at(0, "der(phi2)"), run.at(0, "der(theta2)")};
+  Pendulum54State coarse = fine;
+  double rk4_error = 0, error = 0, out_of_plane = 0;
+  for (std::size_t k = 0; k < run.rows.size(); ++k) {
+    ASSERT_NEAR(run.at(k, "t"), 0.01 * static_cast<double>(k), 1e-12);
+    if (k > 0) {
+      fine = hand.rk4(fine, 1e-4, 100);
+      coarse = hand.rk4(coarse, 2e-4, 50);
+    }
+    std::size_t j = 0;
+    for (const char* column :
+         {"theta1", "phi2", "theta2", "der(theta1)", "der(phi2)", "der(theta2)"}) {
+      rk4_error = std::max(rk4_error, std::abs(fine[j] - coarse[j]) / 15.0);
+      error = std::max(error, std::abs(run.at(k, column) - fine[j]));
+      ++j;
+    }
+    out_of_plane = std::max(out_of_plane, std::abs(fine[1] - std::acos(0.0)));
+  }
+  EXPECT_GT(out_of_plane, 0.1);
+  ASSERT_LT(rk4_error, 1e-12);
+  EXPECT_LT(error, 1e-10);  // a run at rtol 1e-12 over 5 s: ~3e-11
+  std::printf(
+      "Ex. 5.4(d) vs hand RK4 over 5 s (RK4 error %.3g): angles and rates %.3g; phi2 leaves "
+      "pi/2 by %.3g\n",
+      rk4_error, error, out_of_plane);
 }
 
 }  // namespace

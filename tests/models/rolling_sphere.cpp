@@ -1,15 +1,21 @@
 // A uniform sphere rolling without slipping: down an incline (§9.8, (9.26)), on a turntable
 // (Exercise 9.10, (9.33)–(9.34)) and inside a pipe (a `rolling:` contact whose normal changes with
 // the coordinates), described by its centre and Euler parameters with the rolling constraints
-// v_P = 0 or v_P = Ω E3 × x̄ as velocity constraints.
+// v_P = 0 or v_P = Ω E3 × x̄ as velocity constraints; and, for Exercise 10.4, on the incline in
+// 3-1-3 angles, rolling and sliding.
 #include <cmath>
 #include <complex>
+#include <cstdio>
+#include <string>
+#include <utility>
 
 #include <fstream>
 #include <sstream>
 #include "support/model_run.hpp"
 #include "unidyn/integrate/dormand_prince.hpp"
 #include "unidyn/integrate/driver.hpp"
+#include "unidyn/kinematics/integrability.hpp"
+#include "unidyn/symbolic/printing.hpp"
 
 namespace unidyn {
 namespace {
@@ -204,6 +210,183 @@ TEST(RollingSphere, InsideAPipeAsItsReducedEquation) {
   }
   EXPECT_LT(lowest, 0.02);  // it swung through the bottom
   EXPECT_LT(run.summary.energy_relative_drift, 1e-11);
+}
+
+// Exercise 10.4 redoes §9.8 in 3-1-3 angles (ψ, θ, φ): the sphere of sphere-incline.yaml with
+// them in place of Euler parameters, given here as text (rough: v_P = 0; smooth but for Coulomb
+// friction at the contact: the plane x3 = R alone).
+std::string sphere_on_incline_313(const std::string& constraints, const std::string& initial) {
+  return R"yaml(unidyn: 1
+parameters: {m: 1.0, g: 9.81, R: 0.1, beta: 0.3, mu_d: 0.2, mu_s: 0.3}
+coordinates: [x1, x2, x3, psi, theta, phi]
+bodies:
+  ball:
+    mass: m
+    inertia: {sphere: {radius: R}}
+    rotation: {euler: 3-1-3, angles: [psi, theta, phi]}
+    center: [x1, x2, x3]
+forces:
+  - gravity: g*(sin(beta)*E1 - cos(beta)*E3)
+constraints:
+)yaml" + constraints +
+         "initial: " + initial +
+         "\nsimulate: {t_end: 2, output_step: 0.01, rtol: 1e-12}\noutputs:\n"
+         "  vP1: dot(ball.velocity + cross(ball.omega, -R*E3), E1)\n"
+         "  vP2: dot(ball.velocity + cross(ball.omega, -R*E3), E2)\n"
+         "  Fc1: dot(ball.constraint_force, E1)\n"
+         "  Mc1: dot(ball.constraint_moment, E1)\n  Mc2: dot(ball.constraint_moment, E2)\n"
+         "  Mc3: dot(ball.constraint_moment, E3)\n";
+}
+
+// The book's slip velocities of Ex. 10.4(a), v_s1 = ẋ1 − R θ̇ sin ψ + R φ̇ sin θ cos ψ and
+// v_s2 = ẋ2 + R θ̇ cos ψ + R φ̇ sin θ sin ψ, from a row of a run.
+std::pair<double, double> book_slip_104(const test::ModelRun& run, std::size_t i, double R) {
+  const double psi = run.at(i, "psi"), theta = run.at(i, "theta");
+  const double dtheta = run.at(i, "der(theta)"), dphi = run.at(i, "der(phi)");
+  return {run.at(i, "der(x1)") - R * dtheta * std::sin(psi) +
+              R * dphi * std::sin(theta) * std::cos(psi),
+          run.at(i, "der(x2)") + R * dtheta * std::cos(psi) +
+              R * dphi * std::sin(theta) * std::sin(psi)};
+}
+
+// Exercise 10.4(a), (c), (d), (e), (f), rolling: (a) the rows v_P · E1, v_P · E2 (v_P = v̄ + ω × π_P
+// (10.52), π_P = −R E3) of the 3-1-3 model are the book's v_s1, v_s2 and (d) its T is the book's
+// (symbolically); (c) the rolling rows are not integrable (Frobenius, against the book). Rolling
+// from ψ0 = 0.4, θ0 = π/2 at ẋ1 = 0.5 m/s with ω = ẋ1/R E2 (θ̇0 = (0.5/R) sin ψ0,
+// φ̇0 = −(0.5/R) cos ψ0; all three angles then move): by (f) with v_s ≡ 0 the friction is
+// F_f · E1 = −(2/7) m g sin β, F_f · E2 = 0, so x1 = 0.5 t + (5/14) g sin β t², x2 = 0, and the
+// sphere turns about E2 by x1/R: cos θ = e3 · E3 = −sin ψ0 sin(x1/R). The run against these closed
+// forms: x1, x2, θ, the multipliers λ(roll1) = F_f · E1, λ(roll2), λ(plane) = m g cos β, the
+// run's M_c = Ḣ − M against −R E3 × F_c (c), and the book's v_s1, v_s2 recomputed from its rows
+// (0).
+TEST(RollingSphere, InclineIn313AnglesOfExercise104) {
+  const System system = parse_model(
+      sphere_on_incline_313(
+          "  - {name: plane, position: x3 - R}\n"
+          "  - {name: roll1, velocity: \"dot(ball.velocity + cross(ball.omega, -R*E3), E1)\"}\n"
+          "  - {name: roll2, velocity: \"dot(ball.velocity + cross(ball.omega, -R*E3), E2)\"}\n",
+          "{x3: R, psi: 0.4, theta: pi/2, der(x1): 0.5, der(theta): 0.5/R*sin(0.4), der(phi): "
+          "-0.5/R*cos(0.4)}"),
+      "sphere-incline-313.yaml");
+  {
+    const auto& q = system.coordinates();
+    const auto at = [&](const char* name) { return q[*system.find_coordinate(name)]; };
+    const Expr Rs = system.parameters[*system.find_parameter("R")].symbol;
+    const Expr psi = at("psi").value, th = at("theta").value;
+    const Expr dth = at("theta").rate, dphi = at("phi").rate;
+    const Expr vs1 =
+        at("x1").rate - Rs * dth * GiNaC::sin(psi) + Rs * dphi * GiNaC::sin(th) * GiNaC::cos(psi);
+    const Expr vs2 =
+        at("x2").rate + Rs * dth * GiNaC::cos(psi) + Rs * dphi * GiNaC::sin(th) * GiNaC::sin(psi);
+    EXPECT_TRUE(simplify(system.constraints[1].expression - vs1).is_zero())
+        << simplify(system.constraints[1].expression - vs1);
+    EXPECT_TRUE(simplify(system.constraints[2].expression - vs2).is_zero())
+        << simplify(system.constraints[2].expression - vs2);
+    // (d)'s T = (m R²/5)(ψ̇² + θ̇² + φ̇² + 2 ψ̇ φ̇ cos θ) + (m/2)(ẋ1² + ẋ2² + ẋ3²)
+    const Expr ms = system.parameters[*system.find_parameter("m")].symbol, dpsi = at("psi").rate;
+    const Expr T = ms * Rs * Rs / 5 *
+                       (dpsi * dpsi + dth * dth + dphi * dphi + 2 * dpsi * dphi * GiNaC::cos(th)) +
+                   ms / 2 *
+                       (at("x1").rate * at("x1").rate + at("x2").rate * at("x2").rate +
+                        at("x3").rate * at("x3").rate);
+    EXPECT_TRUE(simplify(lagrange_equations(system).kinetic_energy - T).is_zero());
+    // (c): at least one rolling constraint is not integrable (here both are; the plane's is)
+    EXPECT_TRUE(constraint_integrability(system, 0).integrable);
+    EXPECT_FALSE(constraint_integrability(system, 1).integrable);
+    EXPECT_FALSE(constraint_integrability(system, 2).integrable);
+  }
+  const test::ModelRun run = test::run_system(system);
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const double m = 1, g = 9.81, R = 0.1, beta = 0.3, v0 = 0.5, psi0 = 0.4;
+  ASSERT_EQ(run.parameter("m"), m);
+  ASSERT_EQ(run.parameter("R"), R);
+  ASSERT_EQ(run.parameter("beta"), beta);
+  double path_error = 0, angle_error = 0, load_error = 0, slip = 0, theta_range = 0;
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    const double t = run.at(i, "t"), x1 = v0 * t + 5.0 / 14.0 * g * std::sin(beta) * t * t;
+    path_error =
+        std::max({path_error, std::abs(run.at(i, "x1") - x1), std::abs(run.at(i, "x2")),
+                  std::abs(run.at(i, "der(x1)") - v0 - 5.0 / 7.0 * g * std::sin(beta) * t)});
+    angle_error = std::max(
+        angle_error, std::abs(std::cos(run.at(i, "theta")) + std::sin(psi0) * std::sin(x1 / R)));
+    theta_range = std::max(theta_range, std::abs(run.at(i, "theta") - std::acos(0.0)));
+    load_error = std::max(
+        {load_error, std::abs(run.at(i, "lambda(roll1)") + 2.0 / 7.0 * m * g * std::sin(beta)),
+         std::abs(run.at(i, "lambda(roll2)")),
+         std::abs(run.at(i, "lambda(plane)") - m * g * std::cos(beta)),
+         // M_c = −R E3 × F_c = −R (F_f · E1) E2
+         std::abs(run.at(i, "Mc2") - 2.0 / 7.0 * m * g * R * std::sin(beta)),
+         std::abs(run.at(i, "Mc1")), std::abs(run.at(i, "Mc3"))});
+    const auto [s1, s2] = book_slip_104(run, i, R);
+    slip = std::max({slip, std::abs(s1), std::abs(s2)});
+  }
+  EXPECT_GT(theta_range, 0.3);  // θ swings through π/2 ± ψ0: all three angles move
+  // a run at rtol 1e-12 over 2 s and ~50 rad of turning: ~1e-12
+  EXPECT_LT(path_error, 1e-10);
+  EXPECT_LT(angle_error, 1e-10);
+  EXPECT_LT(load_error, 1e-10);
+  EXPECT_LT(slip, 1e-10);
+  EXPECT_LT(run.summary.energy_relative_drift, 1e-11);
+  std::printf(
+      "Ex. 10.4 rolling in 3-1-3: x1/x2/x1' %.3g, cos(theta) %.3g, F_c/M_c %.3g N (N m), book's "
+      "v_s %.3g m/s off the closed forms\n",
+      path_error, angle_error, load_error, slip);
+}
+
+// Exercise 10.4(b), (d), (f), sliding: with the plane x3 = R the only constraint and Coulomb
+// friction (μ_d = 0.2) at the contact, the sphere of the 3-1-3 model thrown down the incline at
+// u0 = 2 m/s without spin slides with F_f · E1 = −μ_d m g cos β, and the book's
+// m v̇_s1 = (1 + 5/2) F_f · E1 + m g sin β, m v̇_s2 = (1 + 5/2) F_f · E2 give
+// v_s1 = u0 − ((7/2) μ_d g cos β − g sin β) t, v_s2 = 0 until v_s1 = 0 at
+// T = u0/((7/2) μ_d g cos β − g sin β); then it rolls, F_f · E1 = −(2/7) m g sin β (within
+// μ_s m g cos β) and ẋ1 grows at (5/7) g sin β from ẋ1(T) = u0 + (g sin β − μ_d g cos β) T. The
+// book's v_s1, v_s2 recomputed from the run's rows and its ẋ1, F_c · E1, normal force and
+// M_c = Ḣ − M against these (M_c = −R E3 × F_c, (b)).
+TEST(RollingSphere, SlidingThenRollingOnTheInclineIn313AnglesOfExercise104f) {
+  const test::ModelRun run = test::run_system(parse_model(
+      sphere_on_incline_313("  - name: plane\n    position: x3 - R\n    friction: {on: ball, at: "
+                            "ball.center - R*E3, dynamic: mu_d, static: mu_s}\n",
+                            "{x3: R, psi: 0.4, theta: pi/2, der(x1): 2.0}"),
+      "sphere-slide-313.yaml"));
+  ASSERT_TRUE(run.summary.ok) << run.summary.message;
+  const double m = 1, g = 9.81, R = 0.1, beta = 0.3, mu = 0.2, u0 = 2.0;
+  ASSERT_EQ(run.parameter("mu_d"), mu);
+  const double slowing = 3.5 * mu * g * std::cos(beta) - g * std::sin(beta), T = u0 / slowing;
+  const double vT = u0 + (g * std::sin(beta) - mu * g * std::cos(beta)) * T;
+  ASSERT_EQ(run.summary.phases.size(), 2u);
+  EXPECT_EQ(run.summary.phases[1].what, "contact 'plane' sticks");
+  EXPECT_NEAR(run.summary.phases[1].t, T, 1e-10);
+  double slip_error = 0, speed_error = 0, force_error = 0;
+  std::size_t sliding = 0;
+  for (std::size_t i = 0; i < run.rows.size(); ++i) {
+    const double t = run.at(i, "t");
+    const auto [s1, s2] = book_slip_104(run, i, R);
+    const bool slides = t < T - 1e-9;
+    if (t > T - 1e-9 && t < T + 1e-9) continue;  // the switch's own row
+    sliding += slides;
+    slip_error = std::max({slip_error, std::abs(s1 - (slides ? u0 - slowing * t : 0.0)),
+                           std::abs(s2), std::abs(run.at(i, "vP1") - s1)});
+    speed_error = std::max(
+        speed_error, std::abs(run.at(i, "der(x1)") -
+                              (slides ? u0 + (g * std::sin(beta) - mu * g * std::cos(beta)) * t
+                                      : vT + 5.0 / 7.0 * g * std::sin(beta) * (t - T))));
+    const double friction =
+        slides ? -mu * m * g * std::cos(beta) : -2.0 / 7.0 * m * g * std::sin(beta);
+    force_error = std::max({force_error, std::abs(run.at(i, "Fc1") - friction),
+                            std::abs(run.at(i, "lambda(plane)") - m * g * std::cos(beta)),
+                            // M_c = −R E3 × F_c = −R (F_f · E1) E2
+                            std::abs(run.at(i, "Mc2") + R * friction), std::abs(run.at(i, "Mc1")),
+                            std::abs(run.at(i, "Mc3"))});
+  }
+  EXPECT_GT(sliding, 20u);
+  // a run at rtol 1e-12 and the switch located to ~1e-12 s
+  EXPECT_LT(slip_error, 1e-10);
+  EXPECT_LT(speed_error, 1e-10);
+  EXPECT_LT(force_error, 1e-10);
+  std::printf(
+      "Ex. 10.4(f) sliding then rolling in 3-1-3: rolls at T = %.6f s; book's v_s %.3g m/s, x1' "
+      "%.3g m/s, F_f/N/M_c %.3g N (N m) off the closed forms\n",
+      T, slip_error, speed_error, force_error);
 }
 
 }  // namespace
