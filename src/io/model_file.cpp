@@ -82,7 +82,8 @@ System ModelReader::read(const YAML::Node& root) {
 
   System system;
   system.source = file_;
-  system.name = root["name"] ? printable_name(root["name"], "the model's name", false) : printable(file_);  // shown: no raw control characters
+  system.name = root["name"] ? printable_name(root["name"], "the model's name", false)
+                             : printable(file_);  // shown: no raw control characters
   if (root["description"]) {
     system.description = printable_name(root["description"], "the model's description", false);
   }
