@@ -13,10 +13,10 @@
 // A PythonModel is freed under the same lock.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <functional>
 #include <string>
 #include <utility>
 #include <vector>

@@ -71,9 +71,8 @@ TEST(SweepRun, EachResultIsTheRunMadeDirectly) {
   EXPECT_EQ(result.find(expected), result.find('\n') + 1) << result;
   std::string tail;
   for (const double v : last) tail += fmt::format(",{}", v);
-  const std::string stamp =
-      fmt::format("# unidyn sweep result of manifest sha256 h, run 5, seed {}\n",
-                  s.manifest.runs[5].seed);
+  const std::string stamp = fmt::format(
+      "# unidyn sweep result of manifest sha256 h, run 5, seed {}\n", s.manifest.runs[5].seed);
   EXPECT_EQ(result.substr(result.size() - stamp.size() - tail.size() - 1), tail + "\n" + stamp)
       << result;
 }
