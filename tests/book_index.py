@@ -66,6 +66,9 @@ def main(root):
             errors.append(f"{section}: a row without 6 cells: {cells[:1]}")
             continue
         item, status, oracle, evidence = cells[0], cells[3].split(" (")[0], cells[4], cells[5]
+        # a | inside a cell ends the cell on GitHub: it is written \|
+        if any(re.search(r"(?<!\\)\|", c) for c in cells):
+            errors.append(f"{section} {item}: a cell holds an unescaped | (write \\|)")
         if status not in STATUSES:
             errors.append(f"{section} {item}: unknown status '{cells[3]}'")
             continue
