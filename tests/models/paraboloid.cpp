@@ -19,10 +19,6 @@ using test::run_model;
 
 using Vec = std::array<double, 3>;
 
-double parameter(const ModelRun& run, const std::string& name) {
-  return run.system.parameters.at(run.system.find_parameter(name).value()).value;
-}
-
 // The row at time t (rows are at exact multiples of the output step).
 std::size_t row_at(const ModelRun& run, double t) {
   for (std::size_t k = 0; k < run.rows.size(); ++k) {
@@ -49,7 +45,7 @@ struct Integrals {
 };
 
 Integrals book_integrals(const ModelRun& run, std::size_t k) {
-  const double m = parameter(run, "m"), g = parameter(run, "g"), c = parameter(run, "c");
+  const double m = run.parameter("m"), g = run.parameter("g"), c = run.parameter("c");
   const double u = run.at(k, "u"), ud = run.at(k, "der(u)");
   const double h = m * u * u * c * c * run.at(k, "der(theta)");
   const double E = 0.5 * m * (u * u + c * c) * ud * ud + h * h / (2 * m * u * u * c * c) +
@@ -92,7 +88,7 @@ TEST(Paraboloid, ConservedAngularMomentumAndEnergy) {
 TEST(Paraboloid, AgreesWithReducedEquationByRk4) {
   const ModelRun run = run_model("paraboloid", {}, [](SimulationOptions& o) { o.t_end = 5.0; });
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
-  const double m = parameter(run, "m"), g = parameter(run, "g"), c = parameter(run, "c");
+  const double m = run.parameter("m"), g = run.parameter("g"), c = run.parameter("c");
   const double h = book_integrals(run, 0).h;
   using State = std::array<double, 2>;
   const auto rates = [&](const State& s) {
@@ -137,7 +133,7 @@ TEST(Paraboloid, NormalForceMultiplier) {
     o.output_step = step;
   });
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
-  const double m = parameter(run, "m"), g = parameter(run, "g"), c = parameter(run, "c");
+  const double m = run.parameter("m"), g = run.parameter("g"), c = run.parameter("c");
   double fd_error = 0.0, book_error = 0.0, scale = 0.0;
   for (std::size_t k = 2; k + 2 < run.rows.size(); ++k) {
     // fourth-order central difference of the rows' velocities: truncation (h⁴/30)|v⁽⁵⁾| ~ 1e-11,

@@ -20,11 +20,6 @@ using test::kPi;
 using test::ModelRun;
 using test::run_model;
 
-// The model file's parameter values.
-double parameter(const ModelRun& run, const std::string& name) {
-  return run.system.parameters.at(run.system.find_parameter(name).value()).value;
-}
-
 // The model's values, read from the file once.
 struct Hoop {
   double m, g, R0, Omega;
@@ -199,8 +194,8 @@ TEST(RotatingHoop, TopIsUnstable) {
 TEST(RotatingHoop, JacobiIntegralConservedEnergyNot) {
   const ModelRun run = run_model("rotating-hoop", {}, [](SimulationOptions& o) { o.t_end = 5.0; });
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
-  const double m = parameter(run, "m"), g = parameter(run, "g"), R0 = parameter(run, "R0"),
-               Omega = parameter(run, "Omega");
+  const double m = run.parameter("m"), g = run.parameter("g"), R0 = run.parameter("R0"),
+               Omega = run.parameter("Omega");
   const double scale = m * g * R0 + m * R0 * R0 * Omega * Omega;
   const auto jacobi = [&](std::size_t k) {
     const double phi = run.at(k, "phi"), phidot = run.at(k, "der(phi)");
@@ -248,8 +243,7 @@ TEST(RotatingHoop, JacobiIntegralConservedEnergyNot) {
 TEST(RotatingHoop, AgreesWithBookEquationByRk4) {
   const ModelRun run = run_model("rotating-hoop", {}, [](SimulationOptions& o) { o.t_end = 5.0; });
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
-  const Hoop p{parameter(run, "m"), parameter(run, "g"), parameter(run, "R0"),
-               parameter(run, "Omega")};
+  const Hoop p{run.parameter("m"), run.parameter("g"), run.parameter("R0"), run.parameter("Omega")};
   const std::size_t k = row_at(run, 5.0);
   const std::array<double, 2> s0{run.at(0, "phi"), run.at(0, "der(phi)")};
   // RK4 with h = 5e-4 and 1e-3: O(h⁴) error, the difference bounds it

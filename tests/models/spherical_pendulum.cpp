@@ -18,11 +18,6 @@ namespace {
 using test::ModelRun;
 using test::run_model;
 
-// The model's parameter value (the runs below use no overrides).
-double parameter(const ModelRun& run, const std::string& name) {
-  return run.system.parameters.at(run.system.find_parameter(name).value()).value;
-}
-
 // The row at time t (rows are at exact multiples of the output step).
 std::size_t row_at(const ModelRun& run, double t) {
   for (std::size_t k = 0; k < run.rows.size(); ++k) {
@@ -71,7 +66,7 @@ TEST(SphericalPendulum, EnergyAndH3ConservedOver100Seconds) {
   EXPECT_LT(run.summary.energy_relative_drift, 1e-9);
 
   // H3 = m L² sin²φ θ̇, from the rows (not the model's own column) and from the summary.
-  const double m = parameter(run, "m"), L = parameter(run, "L");
+  const double m = run.parameter("m"), L = run.parameter("L");
   const double h0 = m * L * L * std::pow(std::sin(run.at(0, "phi")), 2) * run.at(0, "der(theta)");
   double h_change = 0.0;
   for (std::size_t k = 0; k < run.rows.size(); ++k) {
@@ -97,10 +92,10 @@ TEST(SphericalPendulum, CartesianModelSamePathAndTension) {
   ASSERT_TRUE(cart.summary.ok) << cart.summary.message;
   ASSERT_EQ(sph.rows.size(), 1001u);
   ASSERT_EQ(cart.rows.size(), sph.rows.size());
-  const double m = parameter(sph, "m"), g = parameter(sph, "g"), L = parameter(sph, "L");
-  ASSERT_EQ(parameter(cart, "L"), L);
-  ASSERT_EQ(parameter(cart, "m"), m);
-  ASSERT_EQ(parameter(cart, "g"), g);
+  const double m = sph.parameter("m"), g = sph.parameter("g"), L = sph.parameter("L");
+  ASSERT_EQ(cart.parameter("L"), L);
+  ASSERT_EQ(cart.parameter("m"), m);
+  ASSERT_EQ(cart.parameter("g"), g);
 
   double position_error = 0.0, closed_form_error = 0.0, tension_error = 0.0, tension_scale = 0.0;
   for (std::size_t k = 0; k < sph.rows.size(); ++k) {
@@ -140,7 +135,7 @@ TEST(SphericalPendulum, CartesianModelSamePathAndTension) {
 TEST(SphericalPendulum, CartesianConstraintResiduals) {
   const ModelRun cart = run_model("spherical-pendulum-cartesian");
   ASSERT_TRUE(cart.summary.ok) << cart.summary.message;
-  const double L = parameter(cart, "L");
+  const double L = cart.parameter("L");
   double psi = 0.0, psidot = 0.0;
   for (std::size_t k = 0; k < cart.rows.size(); ++k) {
     const double x = cart.at(k, "x"), y = cart.at(k, "y"), z = cart.at(k, "z");
@@ -163,7 +158,7 @@ TEST(SphericalPendulum, AgreesWithBookEquationsByRk4) {
   const ModelRun run =
       run_model("spherical-pendulum", {}, [](SimulationOptions& o) { o.t_end = 5.0; });
   ASSERT_TRUE(run.summary.ok) << run.summary.message;
-  const double g = parameter(run, "g"), L = parameter(run, "L");
+  const double g = run.parameter("g"), L = run.parameter("L");
   const double phi0 = run.at(0, "phi");
   const double p = std::pow(std::sin(phi0), 2) * run.at(0, "der(theta)");
   const State s0{phi0, run.at(0, "der(phi)"), run.at(0, "theta")};
