@@ -561,9 +561,9 @@ SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
     } else if (which < U + F) {
       // a slip that only turned re-arms its event: a new start (the steps past it assumed the
       // old direction), without a row of its own
-      std::string what = friction.handle(t, yq, yv, which - U, data);
+      std::vector<std::string> what = friction.handle(t, yq, yv, which - U, data);
       if (what.empty()) return AfterEvent::restart_quietly;
-      summary.phases.push_back({t, std::move(what)});
+      for (auto& line : what) summary.phases.push_back({t, std::move(line)});
     } else if (which < UFI) {
       // the rates jump; the rough contacts stick or slide from the new rates
       summary.phases.push_back({t, impulses.apply(t, yq, yv, which - U - F, contacts.active())});
