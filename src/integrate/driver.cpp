@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "unidyn/numeric/number_text.hpp"
 
@@ -85,6 +86,31 @@ std::optional<Crossing> earliest_crossing(Stepper& stepper, const IntegrationCal
   return first;
 }
 
+// Events that do not settle: a handler that re-arms an event which fires again at once (a
+// Zeno-like loop) would keep the run at one instant for ever. More than kMaxEventsAtAnInstant
+// events within 1e-9 (relative) of the first of them stop the run with the reason.
+constexpr int kMaxEventsAtAnInstant = 1000;
+class EventStreak {
+ public:
+  void record(double t) {
+    if (count_ == 0 || std::abs(t - first_) > 1e-9 * std::max(1.0, std::abs(first_))) {
+      first_ = t;
+      count_ = 0;
+    }
+    if (++count_ > kMaxEventsAtAnInstant) {
+      throw IntegrationError(
+          std::to_string(kMaxEventsAtAnInstant) +
+              " events within 1e-9 of t = " + detail::to_text(first_) +
+              ": the events there do not settle (each one's handling sets off the next)",
+          t);
+    }
+  }
+
+ private:
+  double first_ = 0.0;
+  int count_ = 0;
+};
+
 }  // namespace
 
 IntegrationResult integrate(Stepper& stepper, double t0, const Eigen::VectorXd& y0, double t_end,
@@ -118,6 +144,7 @@ IntegrationResult integrate(Stepper& stepper, double t0, const Eigen::VectorXd& 
   emit(t0, y0);
   const bool with_events = callbacks.events && callbacks.on_event;
   Eigen::VectorXd g_before, g_after;
+  EventStreak streak;
   try {
     if (with_events) callbacks.events(t0, y0, g_before);
     while (stepper.t() != t_end) {
@@ -125,6 +152,7 @@ IntegrationResult integrate(Stepper& stepper, double t0, const Eigen::VectorXd& 
       if (with_events) {
         callbacks.events(stepper.t(), stepper.y(), g_after);
         if (const auto event = earliest_crossing(stepper, callbacks, g_before, g_after)) {
+          streak.record(event->t);
           // rows before the event, the state there, the handler, and a new start (or the end)
           while (grid.reached(event->t) && grid.next() != event->t) {
             stepper.dense(grid.next(), row);

@@ -343,5 +343,31 @@ TEST(DriverEvents, QuietEventsRestartWithoutARow) {
   for (const Row& r : rows) EXPECT_NEAR(r.y[0], std::cos(r.t), 1e-9) << r.t;
 }
 
+// A handler that never lets its event settle — x = cos t, the event x ≤ 0, each handling puts x
+// back to +1e-15 so that it fires again at once — is stopped after 1000 events at that instant
+// with the reason, keeping the rows, instead of holding the run there for ever.
+TEST(DriverEvents, EventsThatDoNotSettleStopTheRun) {
+  DormandPrince54 stepper(test::oscillator(1.0), tolerances(1e-12, 1e-14));
+  std::vector<Row> rows;
+  IntegrationCallbacks callbacks = recorder(rows);
+  callbacks.events = [](double, const Eigen::VectorXd& y, Eigen::VectorXd& values) {
+    values.resize(1);
+    values[0] = y[0];
+  };
+  std::size_t handled = 0;
+  callbacks.on_event = [&](double, Eigen::VectorXd& y, std::size_t) -> AfterEvent {
+    ++handled;
+    y[0] = 1e-15;
+    return AfterEvent::restart_quietly;
+  };
+  const IntegrationResult result =
+      integrate(stepper, 0.0, vector({1.0, 0.0}), 15.0, 0.5, callbacks);
+  ASSERT_FALSE(result.ok);
+  EXPECT_EQ(handled, 1000u);
+  EXPECT_NE(result.message.find("do not settle"), std::string::npos) << result.message;
+  EXPECT_NEAR(result.t_failure, std::acos(0.0), 1e-6);
+  EXPECT_EQ(rows.size(), 4u);  // 0, 0.5, 1, 1.5
+}
+
 }  // namespace
 }  // namespace unidyn
