@@ -5,9 +5,9 @@
 
 #include <sstream>
 
-#include "analysis_commands.hpp"
-#include "report_command.hpp"
-#include "simulation_setup.hpp"
+#include "unidyn/commands/analysis_commands.hpp"
+#include "unidyn/commands/report_command.hpp"
+#include "unidyn/commands/run_setup.hpp"
 #include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/numeric/poses.hpp"
@@ -34,10 +34,10 @@ PythonModel::PythonModel(const std::string& source) {
   const std::lock_guard held(symbolic_lock());
   // a text with a line break is a model's text; anything else names a file or a bundled model
   if (source.find('\n') != std::string::npos) {
-    model_ = std::make_unique<cli::CommandModel>(
-        cli::CommandModel{parse_model(source, "<string>"), source, "<string>"});
+    model_ = std::make_unique<commands::LoadedModel>(
+        commands::LoadedModel{parse_model(source, "<string>"), source, "<string>"});
   } else {
-    model_ = std::make_unique<cli::CommandModel>(cli::read_command_model(source));
+    model_ = std::make_unique<commands::LoadedModel>(commands::load_named_model(source));
   }
 }
 
@@ -57,8 +57,8 @@ std::vector<std::pair<std::string, double>> PythonModel::parameters() const {
   return out;
 }
 
-cli::ModelCommands PythonModel::commands(const RunRequest& request) const {
-  cli::ModelCommands c;
+commands::ModelOptions PythonModel::options_of(const RunRequest& request) const {
+  commands::ModelOptions c;
   c.t_end = request.t_end;
   c.output_step = request.output_step;
   c.rtol = request.rtol;
@@ -71,7 +71,7 @@ cli::ModelCommands PythonModel::commands(const RunRequest& request) const {
 const CompiledSystem& PythonModel::compiled_locked() const {
   if (!compiled_) {
     compiled_ = std::make_unique<CompiledSystem>(
-        cli::command_compiled(cli::ModelCommands{}, *model_, system()));
+        commands::command_compiled(commands::ModelOptions{}, *model_, system()));
   }
   return *compiled_;
 }
@@ -88,26 +88,26 @@ std::size_t PythonModel::constraint_count() const {
 
 std::string PythonModel::derive(const std::string& method, const std::string& format,
                                 const std::string& form) const {
-  cli::ModelCommands c;
+  commands::ModelOptions c;
   c.method = method;
   c.format = format;
   c.form = form;
   std::ostringstream out;
   const std::lock_guard held(symbolic_lock());
-  cli::write_derivation(out, c, *model_);
+  commands::write_derivation(out, c, *model_);
   return out.str();
 }
 
 RunResult PythonModel::simulate(const RunRequest& request) const {
-  const cli::ModelCommands c = commands(request);
+  const commands::ModelOptions c = options_of(request);
   const std::lock_guard held(symbolic_lock());
   const System& system = this->system();
-  cli::CommandStart initial = cli::command_start(c, system, system);
-  SimulationOptions options = cli::options_for(system, c);
+  commands::CommandStart initial = commands::command_start(c, system, system);
+  SimulationOptions options = commands::options_for(system, c);
   options.interrupted = request.interrupted;
   const CompiledSystem& code = compiled_locked();
   const std::vector<std::string> computed =
-      cli::complete_command_start(initial, system, system, code);
+      commands::complete_command_start(initial, system, system, code);
   const SimulationStart& start = initial.start;
 
   RunResult result;
@@ -133,7 +133,7 @@ RunResult PythonModel::simulate(const RunRequest& request) const {
   result.rows = s.rows;
   result.ok = s.ok;
   result.message = s.message;
-  result.summary = cli::run_headline(system, options, s);
+  result.summary = commands::run_headline(system, options, s);
   for (const auto& line : start.computed) {
     result.summary += "  parameter computed from set: " + line + "\n";
   }
@@ -141,7 +141,7 @@ RunResult PythonModel::simulate(const RunRequest& request) const {
     result.summary += fmt::format("  initial values computed from the constraints: {}\n",
                                   fmt::join(computed, ", "));
   }
-  if (s.rows > 0) result.summary += cli::run_figures(system, s);
+  if (s.rows > 0) result.summary += commands::run_figures(system, s);
   for (const auto& phase : s.phases) result.events.emplace_back(phase.t, phase.what);
   return result;
 }
@@ -182,7 +182,7 @@ std::string PythonModel::analysis_json(const std::string& command,
                                        const std::vector<std::pair<std::string, double>>& set,
                                        std::size_t starts, const std::vector<std::string>& cyclic,
                                        std::optional<double> period) const {
-  cli::AnalysisCommands c;
+  commands::AnalysisOptions c;
   c.period = period;
   c.at = at;
   c.sets = setting_texts(set);
@@ -191,16 +191,16 @@ std::string PythonModel::analysis_json(const std::string& command,
   c.cyclic = cyclic;
   std::ostringstream out;
   const std::lock_guard held(symbolic_lock());
-  cli::write_analysis(out, command, c, *model_);
+  commands::write_analysis(out, command, c, *model_);
   return out.str();
 }
 
 std::string PythonModel::report(const std::string& path, const RunRequest& request) const {
-  cli::ModelCommands c = commands(request);
+  commands::ModelOptions c = options_of(request);
   c.output = path;
   std::ostringstream out;
   const std::lock_guard held(symbolic_lock());
-  const int status = cli::run_report(c, *model_, out);
+  const int status = commands::run_report(c, *model_, out);
   if (status != 0) throw std::runtime_error(out.str());
   return out.str();
 }

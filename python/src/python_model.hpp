@@ -21,8 +21,8 @@
 #include <utility>
 #include <vector>
 
-#include "command_model.hpp"
-#include "model_commands.hpp"
+#include "unidyn/commands/model_commands.hpp"
+#include "unidyn/commands/model_source.hpp"
 #include "unidyn/numeric/compiled_system.hpp"
 
 namespace unidyn::python {
@@ -92,13 +92,13 @@ class PythonModel {
   std::size_t constraint_count() const;
 
  private:
-  // The command-line options of a request.
-  cli::ModelCommands commands(const RunRequest& request) const;
+  // The commands layer's options of a request.
+  commands::ModelOptions options_of(const RunRequest& request) const;
 
   // the compiled equations, made under the lock on first use
   const CompiledSystem& compiled_locked() const;
 
-  std::unique_ptr<cli::CommandModel> model_;
+  std::unique_ptr<commands::LoadedModel> model_;
   mutable std::unique_ptr<CompiledSystem> compiled_;
 };
 

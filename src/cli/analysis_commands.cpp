@@ -1,186 +1,27 @@
-// The analysis commands: an operating point, its linearisation, its modes, and sweeps of them.
+// The analysis commands on the command line: options in, exit statuses out.
 #include "analysis_commands.hpp"
 
-#include <fmt/format.h>
-
-#include <cmath>
 #include <iostream>
 
-#include "analysis_report.hpp"
-#include "command_model.hpp"
-#include "floquet_report.hpp"
-#include "unidyn/analysis/equilibria.hpp"
-#include "unidyn/analysis/exact_state_matrix.hpp"
-#include "unidyn/analysis/floquet_sweep.hpp"
-#include "unidyn/analysis/parameter_sweep.hpp"
-#include "unidyn/analysis/time_dependence.hpp"
-#include "unidyn/equations/lagrange.hpp"
-#include "unidyn/integrate/simulation.hpp"
-#include "unidyn/io/csv.hpp"
-#include "unidyn/numeric/number_text.hpp"
-#include "unidyn/sweep/manifest.hpp"
+#include "unidyn/commands/model_source.hpp"
 
 namespace unidyn::cli {
-namespace {
-
-// --set: parameters only (the operating point's values go with --at).
-std::vector<std::pair<std::string, double>> parameter_sets(const System& system,
-                                                           const std::vector<std::string>& sets) {
-  const auto overrides = parse_sets(sets);
-  for (const auto& [name, value] : overrides) {
-    if (!system.find_parameter(name)) {
-      throw std::invalid_argument("--set " + name +
-                                  ": not a parameter (give coordinates and rates with --at)");
-    }
-  }
-  return overrides;
-}
-
-// --sweep PARAM=FROM:TO:COUNT (a sweep's grid axis of at least two values).
-struct SweepRange {
-  std::string parameter;
-  double from = 0, to = 0;
-  std::size_t count = 0;
-};
-SweepRange parse_sweep(const std::string& text) {
-  GridAxis axis;
-  try {
-    axis = parse_grid_axis(text);
-  } catch (const std::invalid_argument&) {
-    axis.count = 0;
-  }
-  if (axis.count < 2) {
-    throw std::invalid_argument("--sweep " + text +
-                                ": expected NAME=FROM:TO:COUNT (numbers, COUNT an integer >= 2)");
-  }
-  return {axis.name, axis.from, axis.to, axis.count};
-}
-
-// Where stability changes, on standard error; `growing`, `settling`: what happens above a
-// boundary where stability is lost, regained.
-void print_boundaries(const std::string& parameter,
-                      const std::vector<StabilityBoundary>& boundaries,
-                      const std::string& growing = "a mode grows above it",
-                      const std::string& settling = "the last growing mode decays above it") {
-  for (const StabilityBoundary& b : boundaries) {
-    fmt::print(stderr, "stability changes at {} = {:.12g}: {}\n", parameter, b.value,
-               b.becomes_stable ? settling : growing);
-  }
-  if (boundaries.empty()) fmt::print(stderr, "stability does not change in the range\n");
-}
-
-// The --period given, if any.
-std::optional<double> period_given(const AnalysisCommands& c) {
-  return c.period;
-}
-
-// modes --sweep of a driven system: the Floquet multipliers, one CSV row per value.
-int run_floquet_sweep(const AnalysisCommands& c, const System& system,
-                      const CompiledSystem& compiled, const TimeDependence& dependence,
-                      const std::vector<GivenValue>& given,
-                      const std::vector<std::pair<std::string, double>>& sets) {
-  const SweepRange range = parse_sweep(c.sweep);
-  const FloquetSweep sweep =
-      sweep_floquet(system, compiled, dependence, given, sets, range.parameter, range.from,
-                    range.to, range.count, period_given(c));
-  const std::vector<std::string> header = floquet_sweep_header(sweep);
-  CsvWriter csv(c.output.empty() ? "-" : c.output);
-  csv.header(header);
-  int failures = 0;
-  for (const FloquetSweepPoint& p : sweep.points) {
-    csv.row(floquet_sweep_row(p, (header.size() - 4) / 2));
-    if (!p.failure.empty()) {
-      ++failures;
-      fmt::print(stderr, "{} = {}: {}\n", range.parameter, p.value, p.failure);
-    }
-  }
-  csv.close();
-  fmt::print(stderr,
-             "a periodic motion: Floquet multipliers over one period at each value; stability "
-             "changes where the largest |mu| crosses 1\n");
-  print_boundaries(range.parameter, sweep.boundaries,
-                   "a multiplier leaves the unit circle above it (|mu| > 1)",
-                   "every multiplier is back on or inside the unit circle above it");
-  return failures == 0 ? 0 : 1;
-}
-
-// modes --sweep: one CSV row per value, the stability boundaries on standard error.
-int run_sweep(const AnalysisCommands& c, const System& system, const CompiledSystem& compiled,
-              const std::vector<GivenValue>& given,
-              const std::vector<std::pair<std::string, double>>& sets) {
-  const SweepRange range = parse_sweep(c.sweep);
-  const ParameterSweep sweep = sweep_modes(system, compiled, given, sets, range.parameter,
-                                           range.from, range.to, range.count);
-  std::size_t size = 0;
-  for (const SweepPoint& p : sweep.points) size = std::max(size, p.eigenvalues.size());
-  std::vector<std::string> header{range.parameter, "growth"};
-  for (std::size_t k = 1; k <= size; ++k) {
-    header.push_back(fmt::format("re{}", k));
-    header.push_back(fmt::format("im{}", k));
-  }
-  CsvWriter csv(c.output.empty() ? "-" : c.output);
-  csv.header(header);
-  int failures = 0;
-  for (const SweepPoint& p : sweep.points) {
-    std::vector<double> row{p.value, p.growth};
-    for (std::size_t k = 0; k < size; ++k) {
-      const bool has = k < p.eigenvalues.size();
-      row.push_back(has ? p.eigenvalues[k].real() : NAN);
-      row.push_back(has ? p.eigenvalues[k].imag() : NAN);
-    }
-    csv.row(row);
-    if (!p.failure.empty()) {
-      ++failures;
-      fmt::print(stderr, "{} = {}: {}\n", range.parameter, p.value, p.failure);
-    }
-  }
-  csv.close();
-  print_boundaries(range.parameter, sweep.boundaries);
-  return failures == 0 ? 0 : 1;
-}
-
-// The period of the motion through the point: the one given (--period: equations that change
-// with t must repeat after it; any motion through the point must come back after it, which
-// linearize_periodic checks), else that of equations that depend on t periodically; nothing for
-// equations that do not depend on t (or whose drive stands still at these values). Throws
-// NotPeriodic for a dependence that is not periodic.
-std::optional<DrivePeriod> drive_of(const System& system, const CompiledSystem& compiled,
-                                    const TimeDependence& dependence,
-                                    const std::vector<double>& parameters,
-                                    std::optional<double> period) {
-  if (!dependence.depends && !period) return std::nullopt;
-  return drive_period(system, compiled, dependence, parameters, period);
-}
-
-// linearize, modes of a periodic motion: A(t0), the monodromy matrix, with modes the multipliers.
-void write_periodic(std::ostream& out, const std::string& command, const AnalysisCommands& c,
-                    const System& system, const CompiledSystem& compiled,
-                    const OperatingPoint& point, const DrivePeriod& drive) {
-  const PeriodicLinearization periodic = linearize_periodic(system, compiled, point, drive);
-  const bool modes = command == "modes";
-  const FloquetAnalysis floquet = modes ? analyse_floquet(periodic) : FloquetAnalysis{};
-  const auto write = c.format == "json"    ? periodic_json
-                     : c.format == "latex" ? periodic_latex
-                                           : periodic_text;
-  out << write(system, point, periodic, modes ? &floquet : nullptr);
-}
-
-}  // namespace
 
 void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
+  commands::AnalysisOptions& o = c.options;
   const auto common = [&](CLI::App* command) {
     command->add_option("model", c.model, "MODEL file or bundled model name")->required();
     command->add_option(
-        "--at", c.at,
+        "--at", o.at,
         "NAME=VALUE of the operating point: q or der(q), VALUE a number or an "
         "expression in the parameters; values not given start at 0 and are completed "
         "from the constraints (without --at: the model's initial state)");
-    command->add_option("--set", c.sets, "NAME=NUMBER: a parameter");
-    command->add_option("--format", c.format, "text | latex | json")
+    command->add_option("--set", o.sets, "NAME=NUMBER: a parameter");
+    command->add_option("--format", o.format, "text | latex | json")
         ->check(CLI::IsMember({"text", "latex", "json"}))
         ->capture_default_str();
     command->add_option_function<double>(
-        "--period", [&c](const double& T) { c.period = T; },
+        "--period", [&o](const double& T) { o.period = T; },
         "T: the period of the motion through the point, analysed over it by Floquet's theory "
         "(for equations that depend on t periodically it is found from their sines and "
         "cosines of multiples of t when not given)");
@@ -191,7 +32,7 @@ void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
   c.modes = app.add_subcommand(
       "modes", "Eigenvalues, mode shapes, frequencies and the stability of an operating point");
   common(c.modes);
-  c.modes->add_option("--sweep", c.sweep,
+  c.modes->add_option("--sweep", o.sweep,
                       "NAME=FROM:TO:COUNT: eigenvalues at COUNT values of a parameter, or of a "
                       "coordinate or rate of the operating point, as CSV, and where stability "
                       "changes (on standard error)");
@@ -199,118 +40,35 @@ void add_analysis_commands(CLI::App& app, AnalysisCommands& c) {
       "equilibria",
       "Find the equilibria (or steady motions at given rates or momenta) and their stability");
   c.equilibria->add_option("model", c.model, "MODEL file or bundled model name")->required();
-  c.equilibria->add_option("--at", c.at,
+  c.equilibria->add_option("--at", o.at,
                            "NAME=VALUE: a coordinate held at a value, a rate der(q) of the "
                            "steady motions sought (rates not given are 0), or the momentum p(q) "
                            "of a cyclic coordinate");
   c.equilibria
-      ->add_option("--cyclic", c.cyclic,
+      ->add_option("--cyclic", o.cyclic,
                    "Q,...: cyclic coordinates, held rather than solved for; each rate given "
                    "(der(q)), from its momentum (p(q)), or from the constraints")
       ->delimiter(',');
-  c.equilibria->add_option("--set", c.sets, "NAME=NUMBER: a parameter");
-  c.equilibria->add_option("--starts", c.starts, "starting points of the search")
+  c.equilibria->add_option("--set", o.sets, "NAME=NUMBER: a parameter");
+  c.equilibria->add_option("--starts", o.starts, "starting points of the search")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
-  c.equilibria->add_option("--format", c.format, "text | json")
+  c.equilibria->add_option("--format", o.format, "text | json")
       ->check(CLI::IsMember({"text", "json"}))
       ->capture_default_str();
-  c.modes->add_option("-o,--output", c.output,
+  c.modes->add_option("-o,--output", o.output,
                       "with --sweep: the CSV file (default: standard output)");
-}
-
-// linearize, modes about an equilibrium or a steady motion: A (in closed form where it can be),
-// with modes the eigenvalues and the verdict.
-void write_linearization(std::ostream& out, const std::string& command, const AnalysisCommands& c,
-                         const System& system, const EquationsOfMotion& equations,
-                         const CompiledSystem& compiled, const OperatingPoint& point,
-                         const std::vector<GivenValue>& given) {
-  const Linearization linearization = linearize(system, compiled, point);
-  const bool modes = command == "modes";
-  const ModeAnalysis analysis = modes ? analyse_modes(linearization) : ModeAnalysis{};
-  const ExactLinearization exact{
-      exact_second_order(system, equations, given),
-      exact_state_matrix(system, equations, given, point, linearization)};
-  if (c.format == "json" || c.format == "latex") {
-    out << (c.format == "json" ? analysis_json : analysis_latex)(
-        system, point, linearization, modes ? &analysis : nullptr, exact);
-    return;
-  }
-  out << operating_point_text(system, point, linearization) << linearization_text(linearization)
-      << exact_text(system, linearization, exact);
-  if (modes) out << modes_text(linearization, analysis);
-}
-
-void write_analysis(std::ostream& out, const std::string& command, const AnalysisCommands& c,
-                    const CommandModel& model) {
-  const System& system = model.system;
-  const bool equilibria = command == "equilibria";
-  const auto sets = parameter_sets(system, c.sets);
-  // without --at, linearize and modes are about the model's initial state
-  const bool initial = c.at.empty() && !equilibria;
-  const std::vector<GivenValue> given =
-      initial ? initial_values(system, sets)
-              : parse_given_values(system, c.at, equilibria && !c.cyclic.empty());
-  const EquationsOfMotion equations = lagrange_equations(system);
-  const CompiledSystem compiled(system, equations);
-  const TimeDependence dependence = time_dependence(system, equations);
-  const std::vector<double> parameters = initial_state(system, sets).parameters;
-  if (equilibria) {
-    const auto found = find_equilibria(system, compiled, given, parameters,
-                                       {.starts = c.starts, .cyclic = c.cyclic});
-    out << (c.format == "json" ? equilibria_json(system, found)
-                               : equilibria_text(system, found, c.starts));
-    return;
-  }
-  const std::optional<DrivePeriod> drive =
-      drive_of(system, compiled, dependence, parameters, period_given(c));
-  OperatingPoint point = operating_point(system, compiled, given, parameters);
-  if (initial) point.source = "the model's initial state (no --at given)";
-  try {
-    if (drive) {
-      write_periodic(out, command, c, system, compiled, point, *drive);
-    } else {
-      write_linearization(out, command, c, system, equations, compiled, point, given);
-    }
-  } catch (const NotAnOperatingPoint& e) {
-    if (!initial) throw;
-    throw NotAnOperatingPoint(std::string("no --at given, and the model's initial state is not an "
-                                          "operating point: ") +
-                              e.what());
-  }
 }
 
 int run_analysis_commands(const AnalysisCommands& c) {
   if (!c.linearize->parsed() && !c.modes->parsed() && !c.equilibria->parsed()) return -1;
-  const CommandModel model = read_command_model(c.model);
-  if (!c.sweep.empty() && c.format != "text") {
-    throw std::invalid_argument("--sweep writes CSV: drop --format");
-  }
-  if (!c.sweep.empty()) {
-    const System& system = model.system;
-    const auto sets = parameter_sets(system, c.sets);
-    const std::vector<GivenValue> given = parse_given_values(system, c.at);
-    const EquationsOfMotion equations = lagrange_equations(system);
-    const CompiledSystem compiled(system, equations);
-    const TimeDependence dependence = time_dependence(system, equations);
-    if (const auto period = period_given(c); period && !(std::isfinite(*period) && *period > 0)) {
-      throw std::invalid_argument("--period " + detail::to_short_text(*period) +
-                                  ": expected a positive number of seconds");
-    }
-    if (dependence.depends || period_given(c)) {
-      // a dependence that is not periodic is refused once, not at every value
-      if (!dependence.not_periodic.empty() && !period_given(c)) {
-        drive_period(system, compiled, dependence, initial_state(system, sets).parameters);
-      }
-      return run_floquet_sweep(c, system, compiled, dependence, given, sets);
-    }
-    return run_sweep(c, system, compiled, given, sets);
-  }
-  write_analysis(std::cout,
-                 c.equilibria->parsed() ? "equilibria"
-                 : c.modes->parsed()    ? "modes"
-                                        : "linearize",
-                 c, model);
+  const commands::LoadedModel model = commands::load_named_model(c.model);
+  if (!c.options.sweep.empty()) return commands::write_mode_sweep(c.options, model) ? 0 : 1;
+  commands::write_analysis(std::cout,
+                           c.equilibria->parsed() ? "equilibria"
+                           : c.modes->parsed()    ? "modes"
+                                                  : "linearize",
+                           c.options, model);
   return 0;
 }
 

@@ -10,8 +10,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "command_model.hpp"
 #include "unidyn/analysis/operating_point.hpp"
+#include "unidyn/commands/model_source.hpp"
 #include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/sweep/manifest.hpp"
@@ -55,7 +55,7 @@ fs::path results_directory(const SweepCommand& c) {
 }
 
 int run_plan(const SweepCommand& c) {
-  const CommandModel model = read_command_model(c.model);
+  const commands::LoadedModel model = commands::load_named_model(c.model);
   std::vector<GridAxis> grid;
   std::vector<RandomAxis> random;
   for (const auto& text : c.grid) grid.push_back(parse_grid_axis(text));

@@ -9,7 +9,7 @@
 
 #include "unidyn/analysis/operating_point.hpp"
 
-namespace unidyn::cli::format {
+namespace unidyn::commands::format {
 
 // A number with `digits` significant digits; zero (of either sign) as 0.
 std::string number(double x, int digits = 12);
@@ -36,4 +36,4 @@ std::string bmatrix(const std::vector<std::vector<std::string>>& rows);
 // A numeric matrix as a bmatrix.
 std::string latex_matrix(const Eigen::MatrixXd& A);
 
-}  // namespace unidyn::cli::format
+}  // namespace unidyn::commands::format

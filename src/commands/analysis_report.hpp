@@ -9,7 +9,7 @@
 #include "unidyn/analysis/linearization.hpp"
 #include "unidyn/analysis/modes.hpp"
 
-namespace unidyn::cli {
+namespace unidyn::commands {
 
 // The point, given and computed values, then what was eliminated and dropped.
 std::string operating_point_text(const System& system, const OperatingPoint& point,
@@ -45,4 +45,4 @@ std::string equilibria_text(const System& system, const EquilibriumSearchResult&
                             std::size_t starts);
 std::string equilibria_json(const System& system, const EquilibriumSearchResult& found);
 
-}  // namespace unidyn::cli
+}  // namespace unidyn::commands

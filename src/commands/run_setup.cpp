@@ -1,12 +1,12 @@
 // What `simulate` and `report` share.
-#include "simulation_setup.hpp"
+#include "unidyn/commands/run_setup.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <iterator>
 
-#include "command_model.hpp"
+#include "unidyn/commands/model_source.hpp"
 #include "unidyn/equations/kane.hpp"
 #include "unidyn/equations/reduction.hpp"
 #include "unidyn/integrate/initial_state.hpp"
@@ -15,16 +15,16 @@
 #include "unidyn/symbolic/printable_text.hpp"
 #include "unidyn/symbolic/printing.hpp"
 
-namespace unidyn::cli {
+namespace unidyn::commands {
 
-System command_system(const ModelCommands& c, const System& loaded) {
+System command_system(const ModelOptions& c, const System& loaded) {
   if (!c.reduced) return loaded;
   Reduction reduction = eliminate_constraints(loaded);
   for (const auto& note : reduction.notes) fmt::print(stderr, "approach II: {}\n", note);
   return std::move(reduction.system);
 }
 
-CommandStart command_start(const ModelCommands& c, const System& full, const System& system) {
+CommandStart command_start(const ModelOptions& c, const System& full, const System& system) {
   const auto sets = parse_sets(c.sets);
   if (c.reduced) {
     SimulationStart full_start = initial_state(full, sets);
@@ -56,7 +56,7 @@ std::vector<std::string> complete_command_start(CommandStart& s, const System& f
   return computed;
 }
 
-CompiledSystem command_compiled(const ModelCommands& c, const CommandModel& model,
+CompiledSystem command_compiled(const ModelOptions& c, const LoadedModel& model,
                                 const System& system, bool background) {
   CompileOptions compile_options;
   compile_options.native = c.evaluation == "native";
@@ -74,7 +74,7 @@ CompiledSystem command_compiled(const ModelCommands& c, const CommandModel& mode
   return compiled;
 }
 
-SimulationOptions options_for(const System& system, const ModelCommands& c) {
+SimulationOptions options_for(const System& system, const ModelOptions& c) {
   return simulation_options(system.simulate, {c.t_end, c.output_step, c.rtol, c.integrator});
 }
 
@@ -135,4 +135,4 @@ std::string run_figures(const System& system, const SimulationSummary& s) {
   return fmt::to_string(buffer);
 }
 
-}  // namespace unidyn::cli
+}  // namespace unidyn::commands

@@ -8,7 +8,7 @@
 
 #include "unidyn/model/system.hpp"
 
-namespace unidyn::cli {
+namespace unidyn::commands {
 
 namespace fs = std::filesystem;
 
@@ -24,12 +24,12 @@ std::string resolve_model(const std::string& argument);
 // --set NAME=NUMBER texts; anything else is bad input (std::invalid_argument).
 std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::string>& sets);
 
-// The model named on the command line, read once, and the text it was read from.
-struct CommandModel {
+// The model a command names (a file, or a bundled model by name), read once, and its text.
+struct LoadedModel {
   System system;
   std::string text;
   std::string path;
 };
-CommandModel read_command_model(const std::string& argument);
+LoadedModel load_named_model(const std::string& argument);
 
-}  // namespace unidyn::cli
+}  // namespace unidyn::commands

@@ -8,7 +8,7 @@
 #include "unidyn/analysis/floquet.hpp"
 #include "unidyn/analysis/floquet_sweep.hpp"
 
-namespace unidyn::cli {
+namespace unidyn::commands {
 
 // The point (as for a linearisation), the period, the state, A(t0) and Φ; with `floquet`, the
 // multipliers and the verdict.
@@ -34,4 +34,4 @@ std::string periodic_latex(const System& system, const OperatingPoint& point,
 std::vector<std::string> floquet_sweep_header(const FloquetSweep& sweep);
 std::vector<double> floquet_sweep_row(const FloquetSweepPoint& point, std::size_t multipliers);
 
-}  // namespace unidyn::cli
+}  // namespace unidyn::commands

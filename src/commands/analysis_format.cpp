@@ -5,7 +5,7 @@
 #include "unidyn/numeric/number_text.hpp"
 #include "unidyn/symbolic/coordinates.hpp"
 
-namespace unidyn::cli::format {
+namespace unidyn::commands::format {
 
 // A number with `digits` significant digits; zero (of either sign) as 0.
 std::string number(double x, int digits) {
@@ -136,4 +136,4 @@ std::string latex_matrix(const Eigen::MatrixXd& A) {
   return bmatrix(rows);
 }
 
-}  // namespace unidyn::cli::format
+}  // namespace unidyn::commands::format

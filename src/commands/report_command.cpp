@@ -1,5 +1,5 @@
 // The report command: a run with poses, the check, the page.
-#include "report_command.hpp"
+#include "unidyn/commands/report_command.hpp"
 
 #include <fmt/format.h>
 
@@ -10,9 +10,9 @@
 
 #include "analysis_report.hpp"
 #include "floquet_report.hpp"
-#include "simulation_setup.hpp"
 #include "unidyn/analysis/exact_state_matrix.hpp"
 #include "unidyn/analysis/time_dependence.hpp"
+#include "unidyn/commands/run_setup.hpp"
 #include "unidyn/equations/equivalence.hpp"
 #include "unidyn/equations/newton.hpp"
 #include "unidyn/io/atomic_file.hpp"
@@ -21,7 +21,7 @@
 #include "unidyn/report/report_page.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
 
-namespace unidyn::cli {
+namespace unidyn::commands {
 namespace {
 
 // Newton–Euler against Lagrange (`unidyn check`'s first part), in one sentence.
@@ -77,7 +77,7 @@ ReportOperatingPoint periodic(const std::string& label, const System& system,
 // The point the page linearises about: the one given with --at (bad input when it is not an
 // operating point); else the initial state, when it is an equilibrium or a steady motion; else
 // the first equilibrium found. Without one, why not.
-void add_operating_point(ReportModel& report, const ModelCommands& c, const System& system,
+void add_operating_point(ReportModel& report, const ModelOptions& c, const System& system,
                          const CompiledSystem& compiled, const SimulationStart& start) {
   // a driven system's points are periodic motions, over the period of its drive
   const TimeDependence dependence = time_dependence(system, report.equations);
@@ -132,7 +132,7 @@ void add_operating_point(ReportModel& report, const ModelCommands& c, const Syst
 
 }  // namespace
 
-int run_report(const ModelCommands& c, const CommandModel& model, std::ostream& out) {
+int run_report(const ModelOptions& c, const LoadedModel& model, std::ostream& out) {
   const std::optional<WebAssets> assets = web_assets();
   if (!assets) {
     throw std::runtime_error(
@@ -210,4 +210,4 @@ int run_report(const ModelCommands& c, const CommandModel& model, std::ostream& 
   return s.ok ? 0 : 1;
 }
 
-}  // namespace unidyn::cli
+}  // namespace unidyn::commands

@@ -1,5 +1,5 @@
 // Reading the model a command names, and NAME=VALUE parameters.
-#include "command_model.hpp"
+#include "unidyn/commands/model_source.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -14,7 +14,7 @@
 #define UNIDYN_MODELS_DIR "models"
 #endif
 
-namespace unidyn::cli {
+namespace unidyn::commands {
 namespace {
 
 // The edit distance between two names (insertions, deletions, substitutions).
@@ -95,7 +95,7 @@ std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::st
   return overrides;
 }
 
-CommandModel read_command_model(const std::string& argument) {
+LoadedModel load_named_model(const std::string& argument) {
   const std::string path = resolve_model(argument);
   std::string text = read_model_text(path);
   System system = parse_model(text, path);
@@ -103,4 +103,4 @@ CommandModel read_command_model(const std::string& argument) {
   return {std::move(system), std::move(text), path};
 }
 
-}  // namespace unidyn::cli
+}  // namespace unidyn::commands

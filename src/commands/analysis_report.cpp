@@ -14,7 +14,7 @@
 #include "unidyn/symbolic/canonical_text.hpp"
 #include "unidyn/symbolic/coordinates.hpp"
 
-namespace unidyn::cli {
+namespace unidyn::commands {
 
 using namespace format;
 
@@ -336,4 +336,4 @@ std::string equilibria_json(const System& system, const EquilibriumSearchResult&
                            result.singular, result.not_steady);
 }
 
-}  // namespace unidyn::cli
+}  // namespace unidyn::commands

@@ -10,7 +10,7 @@
 #include "analysis_report.hpp"
 #include "unidyn/io/json_text.hpp"
 
-namespace unidyn::cli {
+namespace unidyn::commands {
 
 using namespace format;
 
@@ -146,4 +146,4 @@ std::vector<double> floquet_sweep_row(const FloquetSweepPoint& p, std::size_t mu
   return row;
 }
 
-}  // namespace unidyn::cli
+}  // namespace unidyn::commands
