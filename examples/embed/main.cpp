@@ -1,4 +1,4 @@
-// unidyn embedded in a C++ program, built against the installed package (examples/embed/README.md):
+// unidyn embedded in a C++ program, built against the installed package (docs/cpp.md):
 // load a model, derive its equations, simulate it, read the results.
 //
 //   embed MODEL.yaml [T_END]   prints the columns and the last row of the run, tab-separated

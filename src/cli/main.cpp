@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
   app.footer(
       "MODEL is a model file or the name of a bundled model (`unidyn models` lists them). The "
       "model\n"
-      "language is described in docs/model-format.md, the commands in the README.");
+      "language is described in docs/model-format.md, the commands in docs/commands.md.");
   unidyn::cli::RotationCommand rotation;
   unidyn::cli::add_rotation_command(app, rotation);
   unidyn::cli::ModelCommands models;

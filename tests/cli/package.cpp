@@ -1,7 +1,8 @@
 // The C++ package: `cmake --install` into a scratch prefix, examples/embed configured with
 // find_package(unidyn) against it, built and run; its last row of the double pendulum's run is the
-// `unidyn simulate` command's, bit for bit (both evaluate the tape of the same equations); the
-// installed command runs. Not under the sanitizers: a program built against their libraries
+// `unidyn simulate` command's, bit for bit (both evaluate the tape of the same equations); its
+// embed-derive, through the commands layer, prints `unidyn derive`'s bytes; the installed command
+// runs. Not under the sanitizers: a program built against their libraries
 // would need their run-time too.
 #include <filesystem>
 
@@ -66,6 +67,13 @@ TEST(Package, EmbedBuiltAgainstTheInstalledPackage) {
   for (char& c : header) c = c == '\t' ? ',' : c;
   EXPECT_EQ(header, rows.front());
   EXPECT_EQ(numbers(embedded[1], '\t'), numbers(rows.back(), ','));
+
+  // the commands layer from C++: derive's bytes (Kane's equations of the rolling disk)
+  ASSERT_EQ(shell("'" + (work / "build/embed-derive").string() + "' rolling-disk kane", out), 0)
+      << read_file(out);
+  const Outcome derived = run("derive rolling-disk --method kane");
+  ASSERT_EQ(derived.status, 0) << derived.err;
+  EXPECT_EQ(read_file(out), derived.out);
 
   // the installed command
   ASSERT_EQ(shell("'" + (prefix / "bin/unidyn").string() + "' models", out), 0) << read_file(out);

@@ -170,7 +170,7 @@ TEST(Report, ALongRunIsThinnedAndDrawn) {
   std::filesystem::remove_all(profile);
   std::remove(page.c_str());
   std::remove(model.c_str());
-  // the README's example
+  // docs/commands.md's example
   const Outcome kepler = run("report kepler --t-end 2000 --output-step 0.01 -o '" + page + "'");
   ASSERT_EQ(kepler.status, 0) << kepler.out << kepler.err;
   EXPECT_TRUE(contains(read_file(page), "\"rows\": 200001, \"rows_shown\": 4432,"));
