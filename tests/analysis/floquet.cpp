@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <numbers>
 
+#include "support/eigen_solvers.hpp"
 #include "support/model_run.hpp"
 #include "unidyn/analysis/floquet_sweep.hpp"
 #include "unidyn/analysis/time_dependence.hpp"
@@ -41,7 +41,7 @@ double characteristic_value(const std::string& kind, double q) {
   if (kind == "a0" || kind == "a2") H(0, 1) = H(1, 0) = std::sqrt(2.0) * q;
   if (kind == "a1") H(0, 0) += q;
   if (kind == "b1") H(0, 0) -= q;
-  const Eigen::VectorXd values = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(H).eigenvalues();
+  const Eigen::VectorXd values = test::symmetric_eigen(H).eigenvalues();
   return kind == "a2" ? values[1] : values[0];
 }
 
@@ -66,7 +66,7 @@ Eigen::Matrix2d mathieu_monodromy(double a, double q, double kappa) {
 }
 
 double largest_modulus(const Eigen::Matrix2d& Y) {
-  return Eigen::EigenSolver<Eigen::Matrix2d>(Y).eigenvalues().cwiseAbs().maxCoeff();
+  return test::eigenvalues(Y).cwiseAbs().maxCoeff();
 }
 
 // ---- unidyn ----
@@ -286,7 +286,7 @@ constraints:
     ASSERT_EQ(p.multipliers.size(), 2u);
     // the pendulum's two among the three
     const Eigen::MatrixXd pendulum = C.monodromy.topLeftCorner(2, 2);
-    const Eigen::VectorXcd mu = Eigen::EigenSolver<Eigen::MatrixXd>(pendulum).eigenvalues();
+    const Eigen::VectorXcd mu = test::eigenvalues(pendulum);
     for (const FloquetMultiplier& expected : p.multipliers) {
       EXPECT_LT(
           std::min(std::abs(mu[0] - expected.multiplier), std::abs(mu[1] - expected.multiplier)),

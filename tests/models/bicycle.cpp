@@ -8,10 +8,10 @@
 // differences of its accelerations, its other values completed from the constraints at each
 // perturbed state, and compared with those matrices, and with the speeds where the weave and the
 // capsize motions change stability (their Table 2).
-#include <Eigen/Eigenvalues>
 #include <cmath>
 
 #include "support/bicycle_benchmark.hpp"
+#include "support/eigen_solvers.hpp"
 #include "support/model_run.hpp"
 #include "unidyn/kinematics/integrability.hpp"
 
@@ -66,7 +66,7 @@ class Bicycle {
 
 // The largest real part of the weave (complex pair) and of the capsize (real) eigenvalues.
 std::pair<double, double> weave_and_capsize(const Eigen::Matrix4d& A) {
-  const Eigen::Vector4cd lambda = Eigen::EigenSolver<Eigen::Matrix4d>(A).eigenvalues();
+  const Eigen::VectorXcd lambda = test::eigenvalues(A);
   double weave = -INFINITY, capsize = -INFINITY;
   for (const auto& l : lambda) {
     if (std::abs(l.imag()) > 1e-6) {

@@ -15,6 +15,7 @@
 #include <string>
 #include <utility>
 
+#include "support/eigen_solvers.hpp"
 #include "support/model_run.hpp"
 #include "support/oracles.hpp"
 
@@ -159,8 +160,8 @@ TEST(DoublePendulum, SmallOscillationsOfAnUnequalPendulum) {
   const Parameters p{1.5, 0.7, 0.8, 1.3, 9.81};
   const std::vector<std::pair<std::string, double>> overrides{
       {"m1", p.m1}, {"m2", p.m2}, {"l1", p.l1}, {"l2", p.l2}, {"g", p.g}};
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> modes(linear_stiffness(p),
-                                                                        linear_mass(p));
+  const test::SymmetricEigen modes =
+      test::generalized_symmetric_eigen(linear_stiffness(p), linear_mass(p));
   ASSERT_EQ(modes.info(), Eigen::Success);
   const double alpha = p.m2 / p.m1, beta = p.l2 / p.l1;
   const double b = (1 + alpha) * (1 + beta);

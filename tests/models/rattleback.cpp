@@ -116,7 +116,7 @@ struct Celt {
       jacobian.col(k) = (rates(x0 + e) - rates(x0 - e)) / (2 * d);
     }
     std::vector<std::complex<double>> modes;
-    for (const auto& lambda : jacobian.eigenvalues()) {
+    for (const auto& lambda : test::eigenvalues(jacobian)) {
       if (std::abs(lambda) > 1) modes.push_back(lambda);
     }
     std::sort(modes.begin(), modes.end(), [](auto p, auto q) {

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "support/eigen_solvers.hpp"
 #include "support/model_run.hpp"
 #include "support/oracles.hpp"
 
@@ -32,11 +33,11 @@ constexpr Parameters kDefault{1.0, 2.0, 10.0, 5.0, 9.81};
 
 // The normal modes: K v = ω² M v with K = [[K1+K2, −K2], [−K2, K2]], M = diag(m1, m2); ω²
 // ascending, the modes in the columns.
-Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> normal_modes(const Parameters& p) {
+test::SymmetricEigen normal_modes(const Parameters& p) {
   Eigen::Matrix2d K, M;
   K << p.K1 + p.K2, -p.K2, -p.K2, p.K2;
   M << p.m1, 0.0, 0.0, p.m2;
-  return Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d>(K, M);
+  return test::generalized_symmetric_eigen(K, M);
 }
 
 std::vector<std::pair<std::string, double>> parameter_overrides(const Parameters& p) {

@@ -2,12 +2,12 @@
 #include "unidyn/rotation/attitude_estimation.hpp"
 
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <vector>
 
+#include "support/eigen_solvers.hpp"
 #include "support/oracles.hpp"
 
 namespace unidyn {
@@ -65,7 +65,7 @@ Solution davenport(const Observations& obs, bool with_translation) {
   K.block<3, 1>(1, 0) = z;
   K.block<1, 3>(0, 1) = z.transpose();
   K.block<3, 3>(1, 1) = B + B.transpose() - sigma * Tensor::Identity();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> solver(K);
+  const test::SymmetricEigen solver = test::symmetric_eigen(K);
   const Eigen::Vector4d p = solver.eigenvectors().col(3);  // eigenvalues ascend
   const Tensor Q = quaternion_rotation(p(0), p.tail<3>());
   return {Q, b_mean - Q * a_mean};

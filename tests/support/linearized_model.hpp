@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "support/eigen_solvers.hpp"
 #include "support/model_run.hpp"
 #include "unidyn/analysis/linearization.hpp"
 #include "unidyn/analysis/modes.hpp"
@@ -32,7 +33,7 @@ struct LinearizedModel {
 
 // The eigenvalues of A, sorted by real part, then imaginary part.
 inline std::vector<std::complex<double>> sorted_eigenvalues(const Eigen::MatrixXd& A) {
-  const Eigen::VectorXcd lambda = Eigen::EigenSolver<Eigen::MatrixXd>(A).eigenvalues();
+  const Eigen::VectorXcd lambda = eigenvalues(A);
   std::vector<std::complex<double>> out(lambda.begin(), lambda.end());
   std::sort(out.begin(), out.end(), [](auto a, auto b) {
     return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag();
