@@ -1,7 +1,8 @@
 // Floquet multipliers of a periodic motion: the variational equations over one period.
 #include "unidyn/analysis/floquet.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_decomposition.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -96,7 +97,7 @@ PeriodicLinearization linearize_periodic(const System& system, const CompiledSys
 
 double largest_multiplier(const MatrixXd& monodromy) {
   if (monodromy.size() == 0) return 0.0;
-  return Eigen::EigenSolver<MatrixXd>(monodromy, false).eigenvalues().cwiseAbs().maxCoeff();
+  return eigen_decomposition(monodromy, false).values.cwiseAbs().maxCoeff();
 }
 
 FloquetAnalysis analyse_floquet(const PeriodicLinearization& P) {
@@ -109,12 +110,12 @@ FloquetAnalysis analyse_floquet(const PeriodicLinearization& P) {
     out.reason = "no state is left to perturb: every coordinate is ignorable";
     return out;
   }
-  const Eigen::EigenSolver<MatrixXd> solver(Phi, false);
-  if (solver.info() != Eigen::Success) {
+  const EigenDecomposition solver = eigen_decomposition(Phi, false);
+  if (!solver.converged) {
     out.reason = "the eigenvalue iteration did not converge";
     return out;
   }
-  const Eigen::VectorXcd mu = solver.eigenvalues();
+  const Eigen::VectorXcd& mu = solver.values;
   // |μ| from the largest; equal ones by arg μ from the smallest
   std::vector<Index> order(static_cast<std::size_t>(s));
   for (Index k = 0; k < s; ++k) order[static_cast<std::size_t>(k)] = k;

@@ -1,7 +1,8 @@
 // Eigenvalues, mode shapes and the stability verdict of a linearisation.
 #include "unidyn/analysis/modes.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_decomposition.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -83,13 +84,13 @@ ModeAnalysis analyse_modes(const Linearization& L) {
     out.reason = "no state is left to perturb: every coordinate is ignorable";
     return out;
   }
-  const Eigen::EigenSolver<MatrixXd> solver(L.A);
-  if (solver.info() != Eigen::Success) {
+  const EigenDecomposition solver = eigen_decomposition(L.A, true);
+  if (!solver.converged) {
     out.reason = "the eigenvalue iteration did not converge";
     return out;
   }
-  const VectorXcd lambda = solver.eigenvalues();
-  const MatrixXcd vectors = solver.eigenvectors();
+  const VectorXcd& lambda = solver.values;
+  const MatrixXcd& vectors = solver.vectors;
   const double largest = lambda.cwiseAbs().maxCoeff();
   const double tolerance = kClose * std::max(largest, 1.0);
   out.tolerance = tolerance;

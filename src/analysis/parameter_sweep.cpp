@@ -1,12 +1,14 @@
 // Eigenvalues along a parameter, and where stability changes.
 #include "unidyn/analysis/parameter_sweep.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_decomposition.hpp"
+
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 
 #include "swept_value.hpp"
 #include "unidyn/integrate/simulation.hpp"
@@ -39,8 +41,9 @@ SweepPoint point_at(const System& system, const CompiledSystem& compiled,
     const OperatingPoint point =
         operating_point(system, compiled, given, initial_state(system, parameters).parameters);
     const Linearization L = linearize(system, compiled, point);
-    const Eigen::VectorXcd lambda = Eigen::EigenSolver<Eigen::MatrixXd>(L.A).eigenvalues();
-    out.eigenvalues.assign(lambda.begin(), lambda.end());
+    const EigenDecomposition eigen = eigen_decomposition(L.A, true);
+    if (!eigen.converged) throw std::runtime_error("the eigenvalue iteration did not converge");
+    out.eigenvalues.assign(eigen.values.begin(), eigen.values.end());
     if (!given_zeros) {
       Eigen::JacobiSVD<Eigen::MatrixXd> svd(L.A);
       svd.setThreshold(kZero);

@@ -1,0 +1,18 @@
+// The eigenvalues (and eigenvectors) of a real square matrix by Eigen's EigenSolver (Hessenberg
+// reduction and the shifted QR iteration to the real Schur form), instantiated in one file: each
+// instantiation costs about 10 s of compile time in every file that makes it.
+#pragma once
+
+#include <Eigen/Dense>
+
+namespace unidyn {
+
+struct EigenDecomposition {
+  bool converged = false;
+  Eigen::VectorXcd values;
+  Eigen::MatrixXcd vectors;  // the eigenvectors in the columns, when asked for
+};
+
+EigenDecomposition eigen_decomposition(const Eigen::MatrixXd& A, bool with_vectors);
+
+}  // namespace unidyn
