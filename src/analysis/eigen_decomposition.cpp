@@ -15,4 +15,8 @@ EigenDecomposition eigen_decomposition(const Eigen::MatrixXd& A, bool with_vecto
   return out;
 }
 
+Eigen::VectorXd symmetric_eigenvalues(const Eigen::MatrixXd& A) {
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(A).eigenvalues();
+}
+
 }  // namespace unidyn

@@ -1,7 +1,8 @@
 // Lagrange–Dirichlet and Routh: the Hessian of the (amended) potential on the constraints.
 #include "energy_minimum.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_decomposition.hpp"
+
 #include <algorithm>
 
 namespace unidyn {
@@ -42,8 +43,7 @@ std::optional<bool> energy_minimum(const Linearization& L, const OperatingPoint&
   if (H.size() == 0 || (H - H.transpose()).cwiseAbs().maxCoeff() > 1e-9 * size) {
     return std::nullopt;
   }
-  const Eigen::SelfAdjointEigenSolver<MatrixXd> eigen(0.5 * (H + H.transpose()));
-  return eigen.eigenvalues().minCoeff() > 1e-9 * size;
+  return symmetric_eigenvalues(0.5 * (H + H.transpose())).minCoeff() > 1e-9 * size;
 }
 
 }  // namespace unidyn
