@@ -47,14 +47,16 @@ void count(const Expr& e, std::size_t min_size, std::map<std::string, Occurrence
   for (std::size_t i = 0; i < x.nops(); ++i) count(x.op(i), min_size, found);
 }
 
-// Bottom up: each subexpression with a name replaced by it (± it, for a sum).
+// Bottom up: each subexpression with a name replaced by it (± it, for a sum). The parts looked
+// into are e's own, not those of −e: GiNaC may write −e with e inside it (a power of a sum with the
+// sign taken out by its own order of terms), and that descent need not end.
 struct Replace : GiNaC::map_function {
   const std::map<std::string, Expr>& named;
   explicit Replace(const std::map<std::string, Expr>& n) : named(n) {}
   Expr operator()(const Expr& e) override {
     const auto [x, text, sign] = with_sign_out(e);
     if (const auto found = named.find(text); found != named.end()) return sign * found->second;
-    return sign * x.map(*this);
+    return e.map(*this);
   }
 };
 

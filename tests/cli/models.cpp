@@ -205,6 +205,21 @@ TEST(CliModels, DeriveZees) {
   EXPECT_LT(equations_length(zees.out), equations_length(textbook.out));
 }
 
+// `derive --form zees` of models whose expressions GiNaC writes as −e with e inside (a power of a
+// sum with its sign taken out): naming the subexpressions must look into e's own parts, or the
+// descent never ends (these crashed on a stack overflow). Each names some z's and prints every
+// equation.
+TEST(CliModels, DeriveZeesWhereGinacWritesMinusEWithEInside) {
+  for (const std::string model : {"foucault-pendulum", "top-spring", "spinning-egg"}) {
+    const Outcome zees = run("derive " + model + " --form zees");
+    ASSERT_EQ(zees.status, 0) << model << ": " << zees.err;
+    EXPECT_FALSE(lines_starting(zees.out, "  z1 = ").empty()) << zees.out;
+    EXPECT_EQ(lines_starting(zees.out, "  [").size(),
+              lines_starting(run("derive " + model).out, "  [").size())
+        << zees.out;
+  }
+}
+
 // `derive --format latex`: the textbook form in an align environment, one labelled equation per
 // coordinate (\ddot{\phi}, \dot{\theta}^{2}, \sin\phi as the book writes them), T and U not
 // numbered; the matrix form in display math with an aligned block.
