@@ -207,29 +207,10 @@ std::vector<std::vector<Index>> euler_parameter_groups(const System& system) {
   return groups;
 }
 
-}  // namespace
-
-EquilibriumSearchResult find_equilibria(const System& system, const CompiledSystem& compiled,
-                                        const std::vector<GivenValue>& given,
-                                        const std::vector<double>& parameters,
-                                        const EquilibriumSearch& search) {
-  expect_smooth_contacts(system, parameters);
-  // equations that change with t have no equilibria to find at one instant
-  if (changes_with_t(compiled, parameters)) {
-    throw std::invalid_argument(
-        "the equations of motion of " + system.name +
-        " depend on t (a moving support or a driving force), so a state at rest at one instant "
-        "is not an equilibrium of the motion; the states the drive keeps at rest are periodic "
-        "motions: analyse one with `unidyn modes MODEL --at NAME=VALUE` (Floquet multipliers "
-        "over a period of the drive)");
-  }
-  const auto n = static_cast<Index>(compiled.coordinate_count());
-  const auto name_of = [&](Index i) -> const std::string& {
-    return system.coordinates()[static_cast<std::size_t>(i)].name;
-  };
-  // The cyclic coordinates.
+// The coordinates --cyclic names, each once.
+std::vector<Index> cyclic_coordinates(const System& system, const std::vector<std::string>& names) {
   std::vector<Index> cyclic;
-  for (const std::string& name : search.cyclic) {
+  for (const std::string& name : names) {
     const auto i = system.find_coordinate(name);
     if (!i) throw std::invalid_argument("--cyclic " + name + ": not a coordinate");
     if (std::find(cyclic.begin(), cyclic.end(), static_cast<Index>(*i)) != cyclic.end()) {
@@ -237,145 +218,163 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
     }
     cyclic.push_back(static_cast<Index>(*i));
   }
-  const GivenState held = given_state(system, given, parameters, cyclic);
-  const Tape momenta = cyclic.empty() ? Tape() : momentum_tape(system, cyclic);
-  SteadyBalance balance{compiled, 0.0,       parameters,
-                        held.q,   held.qdot, {},
-                        {},       {},        cyclic.empty() ? nullptr : &momenta,
-                        {},       VectorXd()};
-  choose_unknowns(balance, held, cyclic);
-  // Where each free coordinate starts: angles anywhere on the circle, others near the model's
-  // value.
-  const VectorXd& initial = held.q;
-  VectorXd spread = VectorXd::Zero(n);
-  std::vector<bool> angle(static_cast<std::size_t>(n), false);
-  for (const Index i : balance.free_q) {
-    angle[static_cast<std::size_t>(i)] = is_angle(balance, initial, i);
-    spread[i] = 2.0 * (1.0 + std::abs(initial[i]));
-  }
-  const double scale =
-      std::max(1.0, balance.residual(balance.unknowns_at(initial)).cwiseAbs().maxCoeff());
-  std::mt19937 random(search.seed);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  const std::vector<std::vector<Index>> quaternions = euler_parameter_groups(system);
-  // the configurations of the equilibria at rest found, to list one attitude once
-  ConfigurationKey configuration(system, compiled);
-  std::vector<std::vector<double>> at_rest;
-  const auto is_free = [&](Index i) {
-    return std::find(balance.free_q.begin(), balance.free_q.end(), i) != balance.free_q.end();
-  };
-  EquilibriumSearchResult result;
-  for (const Index i : cyclic) result.cyclic.push_back(name_of(i));
-  std::vector<Equilibrium>& found = result.equilibria;
-  for (std::size_t start = 0; start < search.starts; ++start) {
-    VectorXd q = initial;
+  return cyclic;
+}
+
+// Where each start puts the free coordinates: angles anywhere on the circle, others near the
+// model's value, Euler parameters a rotation drawn uniformly; and the form a solution is listed
+// in (angles in (−π, π], Euler parameters with the first that is not 0 positive).
+class StartingPoints {
+ public:
+  StartingPoints(const System& system, const SteadyBalance& balance, const VectorXd& initial,
+                 unsigned seed)
+      : balance_(balance),
+        initial_(initial),
+        spread_(VectorXd::Zero(initial.size())),
+        angle_(static_cast<std::size_t>(initial.size()), false),
+        quaternions_(euler_parameter_groups(system)),
+        random_(seed) {
     for (const Index i : balance.free_q) {
-      q[i] = angle[static_cast<std::size_t>(i)] ? std::numbers::pi * unit(random)
-                                                : initial[i] + spread[i] * unit(random);
+      angle_[static_cast<std::size_t>(i)] = is_angle(balance, initial, i);
+      spread_[i] = 2.0 * (1.0 + std::abs(initial[i]));
+    }
+  }
+
+  // Whether free coordinate i is an angle.
+  bool angle(Index i) const { return angle_[static_cast<std::size_t>(i)]; }
+
+  // The next start's coordinates.
+  VectorXd draw() {
+    VectorXd q = initial_;
+    for (const Index i : balance_.free_q) {
+      q[i] =
+          angle(i) ? std::numbers::pi * unit_(random_) : initial_[i] + spread_[i] * unit_(random_);
     }
     // Euler parameters: a rotation drawn uniformly (a normal 4-vector, normalised), where free
-    for (const std::vector<Index>& group : quaternions) {
+    for (const std::vector<Index>& group : quaternions_) {
       double norm = 0.0;
       for (const Index i : group) {
-        q[i] = normal(random);
+        q[i] = normal_(random_);
         norm += q[i] * q[i];
       }
-      for (const Index i : group) q[i] = is_free(i) ? q[i] / std::sqrt(norm) : initial[i];
+      for (const Index i : group) q[i] = is_free(i) ? q[i] / std::sqrt(norm) : initial_[i];
     }
-    const auto solution = solve_from(balance, balance.unknowns_at(q), scale);
-    if (!solution) continue;
-    SteadyBalance::State x = balance.state(*solution);
-    for (const Index i : balance.free_q) {
-      if (angle[static_cast<std::size_t>(i)]) x.q[i] = wrapped(x.q[i]);
+    return q;
+  }
+
+  // A solution in the form it is listed in.
+  void canonical(SteadyBalance::State& x) const {
+    for (const Index i : balance_.free_q) {
+      if (angle(i)) x.q[i] = wrapped(x.q[i]);
     }
     // Euler parameters e and −e are one rotation: the first that is not 0 made positive
-    for (const std::vector<Index>& group : quaternions) {
+    for (const std::vector<Index>& group : quaternions_) {
       const auto first = std::find_if(group.begin(), group.end(),
                                       [&](Index i) { return std::abs(x.q[i]) > 1e-6; });
       if (first != group.end() && x.q[*first] < 0) {
         for (const Index i : group) x.q[i] = -x.q[i];
       }
     }
-    // linearised there: every coordinate given, the rates as given or solved for
-    std::vector<GivenValue> at;
-    for (Index i = 0; i < n; ++i) at.push_back({name_of(i), given_number(x.q[i])});
-    for (const GivenValue& g : given) {
-      const auto value = state_value(system, g.name);
-      if (value && value->rate) at.push_back(g);
+  }
+
+ private:
+  bool is_free(Index i) const {
+    return std::find(balance_.free_q.begin(), balance_.free_q.end(), i) != balance_.free_q.end();
+  }
+
+  const SteadyBalance& balance_;
+  const VectorXd& initial_;
+  VectorXd spread_;
+  std::vector<bool> angle_;
+  std::vector<std::vector<Index>> quaternions_;
+  std::mt19937 random_;
+  std::uniform_real_distribution<double> unit_{-1.0, 1.0};
+  std::normal_distribution<double> normal_{0.0, 1.0};
+};
+
+// The state a solution x stands for, as values for operating_point: every coordinate given, the
+// rates as given or solved for.
+std::vector<GivenValue> state_given(const System& system, const std::vector<GivenValue>& given,
+                                    const SteadyBalance& balance, const SteadyBalance::State& x) {
+  const auto name_of = [&](Index i) -> const std::string& {
+    return system.coordinates()[static_cast<std::size_t>(i)].name;
+  };
+  std::vector<GivenValue> at;
+  for (Index i = 0; i < x.q.size(); ++i) at.push_back({name_of(i), given_number(x.q[i])});
+  for (const GivenValue& g : given) {
+    const auto value = state_value(system, g.name);
+    if (value && value->rate) at.push_back(g);
+  }
+  for (const Index i : balance.free_rate) {
+    at.push_back({"der(" + name_of(i) + ")", given_number(x.qdot[i])});
+  }
+  return at;
+}
+
+// Whether coordinate i of e's is ignorable.
+bool is_ignorable(const System& system, const Equilibrium& e, Index i) {
+  const auto& ignorable = e.linearization.ignorable;
+  return std::find(ignorable.begin(), ignorable.end(),
+                   system.coordinates()[static_cast<std::size_t>(i)].name) != ignorable.end();
+}
+
+// Whether e is one found already: angles modulo 2π; ignorable coordinates, and the dependent ones
+// that move with them (an unbalanced rotor's centre turning with it), aside.
+bool found_already(const System& system, const SteadyBalance& balance, const StartingPoints& starts,
+                   const Equilibrium& e, const std::vector<Equilibrium>& found) {
+  const auto n = static_cast<Index>(balance.compiled.coordinate_count());
+  const MatrixXd moves =
+      e.linearization.to_coordinates.topRows(n)(Eigen::all, e.linearization.dropped);
+  const auto aside = [&](Index i) {
+    return is_ignorable(system, e, i) ||
+           (moves.cols() > 0 && moves.row(i).cwiseAbs().maxCoeff() > 1e-9);
+  };
+  const auto same = [&](const Equilibrium& other) {
+    for (const Index i : balance.free_q) {
+      if (aside(i)) continue;
+      double d = e.point.q[i] - other.point.q[i];
+      if (starts.angle(i)) d = wrapped(d);
+      if (std::abs(d) > 1e-6 * (1.0 + std::abs(e.point.q[i]))) return false;
     }
     for (const Index i : balance.free_rate) {
-      at.push_back({"der(" + name_of(i) + ")", given_number(x.qdot[i])});
+      const double d = e.point.qdot[i] - other.point.qdot[i];
+      if (std::abs(d) > 1e-6 * (1.0 + std::abs(e.point.qdot[i]))) return false;
     }
-    Equilibrium e;
-    try {
-      e.point = operating_point(system, compiled, at, parameters);
-      e.linearization = linearize(system, compiled, e.point);
-    } catch (const NotAnOperatingPoint&) {
-      ++result.not_steady;
-      continue;
-    } catch (const std::exception&) {
-      ++result.singular;  // gimbal lock, singular equations
-      continue;
-    }
-    const auto& ignorable = e.linearization.ignorable;
-    const auto is_ignorable = [&](Index i) {
-      return std::find(ignorable.begin(), ignorable.end(), name_of(i)) != ignorable.end();
-    };
-    // the same as one found already? angles modulo 2π; ignorable coordinates, and the dependent
-    // ones that move with them (an unbalanced rotor's centre turning with it), aside
-    const MatrixXd moves =
-        e.linearization.to_coordinates.topRows(n)(Eigen::all, e.linearization.dropped);
-    const auto aside = [&](Index i) {
-      return is_ignorable(i) || (moves.cols() > 0 && moves.row(i).cwiseAbs().maxCoeff() > 1e-9);
-    };
-    const auto same = [&](const Equilibrium& other) {
-      for (const Index i : balance.free_q) {
-        if (aside(i)) continue;
-        double d = e.point.q[i] - other.point.q[i];
-        if (angle[static_cast<std::size_t>(i)]) d = wrapped(d);
-        if (std::abs(d) > 1e-6 * (1.0 + std::abs(e.point.q[i]))) return false;
-      }
-      for (const Index i : balance.free_rate) {
-        const double d = e.point.qdot[i] - other.point.qdot[i];
-        if (std::abs(d) > 1e-6 * (1.0 + std::abs(e.point.qdot[i]))) return false;
-      }
-      return true;
-    };
-    if (std::any_of(found.begin(), found.end(), same)) continue;
-    // at rest where one found already is, in other coordinates (the other Euler angles)
-    const bool rests = e.point.qdot.isZero(0.0);
-    const std::vector<double> key = rests ? configuration.at(e.point) : std::vector<double>{};
-    if (rests && std::any_of(at_rest.begin(), at_rest.end(),
-                             [&](const auto& other) { return configuration.same(key, other); })) {
-      continue;
-    }
-    if (rests) at_rest.push_back(key);
-    e.modes = analyse_modes(e.linearization);
-    // the balance's Jacobian: directions along which it does not change, ignorable ones aside
-    {
-      MatrixXd J;
-      balance.residual(*solution, &J);
-      Eigen::FullPivLU<MatrixXd> lu(J);
-      lu.setThreshold(1e-9);
-      const auto ignorable_free = static_cast<std::size_t>(
-          std::count_if(balance.free_q.begin(), balance.free_q.end(), is_ignorable));
-      const auto nullity = static_cast<std::size_t>(J.cols() - lu.rank());
-      e.continuum = nullity > ignorable_free ? nullity - ignorable_free : 0;
-    }
-    // Lagrange–Dirichlet at rest, Routh with cyclic coordinates
-    e.potential_minimum = energy_minimum(
-        e.linearization, e.point, cyclic,
-        cyclic.empty()
-            ? MatrixXd(0, n)
-            : derivatives(momenta,
-                          tape_inputs_at(e.point.t, e.point.q, e.point.qdot, e.point.parameters), 1,
-                          n)
-                  .derivative);
-    e.amended = !cyclic.empty();
-    found.push_back(std::move(e));
-  }
-  // in the order of the coordinates, then of the rates
+    return true;
+  };
+  return std::any_of(found.begin(), found.end(), same);
+}
+
+// The dimension of the continuum of equilibria through solution x: the directions along which
+// the balance's Jacobian does not change, ignorable ones aside.
+std::size_t continuum(const System& system, const SteadyBalance& balance, const VectorXd& x,
+                      const Equilibrium& e) {
+  MatrixXd J;
+  balance.residual(x, &J);
+  Eigen::FullPivLU<MatrixXd> lu(J);
+  lu.setThreshold(1e-9);
+  const auto ignorable_free =
+      static_cast<std::size_t>(std::count_if(balance.free_q.begin(), balance.free_q.end(),
+                                             [&](Index i) { return is_ignorable(system, e, i); }));
+  const auto nullity = static_cast<std::size_t>(J.cols() - lu.rank());
+  return nullity > ignorable_free ? nullity - ignorable_free : 0;
+}
+
+// Lagrange–Dirichlet at rest, Routh with cyclic coordinates (their momenta's ∂p/∂q̇ there).
+std::optional<bool> potential_minimum(const Equilibrium& e, const std::vector<Index>& cyclic,
+                                      const Tape& momenta, Index n) {
+  return energy_minimum(
+      e.linearization, e.point, cyclic,
+      cyclic.empty()
+          ? MatrixXd(0, n)
+          : derivatives(momenta,
+                        tape_inputs_at(e.point.t, e.point.q, e.point.qdot, e.point.parameters), 1,
+                        n)
+                .derivative);
+}
+
+// In the order of the coordinates, then of the rates.
+void sort_equilibria(std::vector<Equilibrium>& found, Index n) {
   std::sort(found.begin(), found.end(), [&](const Equilibrium& a, const Equilibrium& b) {
     for (Index i = 0; i < 2 * n; ++i) {
       const double x = i < n ? a.point.q[i] : a.point.qdot[i - n];
@@ -384,6 +383,86 @@ EquilibriumSearchResult find_equilibria(const System& system, const CompiledSyst
     }
     return false;
   });
+}
+
+// Equations that change with t have no equilibria to find at one instant.
+void expect_autonomous(const System& system, const CompiledSystem& compiled,
+                       const std::vector<double>& parameters) {
+  if (changes_with_t(compiled, parameters)) {
+    throw std::invalid_argument(
+        "the equations of motion of " + system.name +
+        " depend on t (a moving support or a driving force), so a state at rest at one instant "
+        "is not an equilibrium of the motion; the states the drive keeps at rest are periodic "
+        "motions: analyse one with `unidyn modes MODEL --at NAME=VALUE` (Floquet multipliers "
+        "over a period of the drive)");
+  }
+}
+
+}  // namespace
+
+EquilibriumSearchResult find_equilibria(const System& system, const CompiledSystem& compiled,
+                                        const std::vector<GivenValue>& given,
+                                        const std::vector<double>& parameters,
+                                        const EquilibriumSearch& search) {
+  expect_smooth_contacts(system, parameters);
+  expect_autonomous(system, compiled, parameters);
+  const auto n = static_cast<Index>(compiled.coordinate_count());
+  // The balance: the unknowns other than the values given and the cyclic coordinates.
+  const std::vector<Index> cyclic = cyclic_coordinates(system, search.cyclic);
+  const GivenState held = given_state(system, given, parameters, cyclic);
+  const Tape momenta = cyclic.empty() ? Tape() : momentum_tape(system, cyclic);
+  SteadyBalance balance{compiled, 0.0,       parameters,
+                        held.q,   held.qdot, {},
+                        {},       {},        cyclic.empty() ? nullptr : &momenta,
+                        {},       VectorXd()};
+  choose_unknowns(balance, held, cyclic);
+  StartingPoints starts(system, balance, held.q, search.seed);
+  const double scale =
+      std::max(1.0, balance.residual(balance.unknowns_at(held.q)).cwiseAbs().maxCoeff());
+  // the configurations of the equilibria at rest found, to list one attitude once
+  ConfigurationKey configuration(system, compiled);
+  std::vector<std::vector<double>> at_rest;
+  EquilibriumSearchResult result;
+  for (const Index i : cyclic) {
+    result.cyclic.push_back(system.coordinates()[static_cast<std::size_t>(i)].name);
+  }
+  std::vector<Equilibrium>& found = result.equilibria;
+  for (std::size_t start = 0; start < search.starts; ++start) {
+    // Gauss–Newton from a start drawn at random
+    const auto solution = solve_from(balance, balance.unknowns_at(starts.draw()), scale);
+    if (!solution) continue;
+    SteadyBalance::State x = balance.state(*solution);
+    starts.canonical(x);
+    // linearised there (a state that is not steady, or singular equations, counted aside)
+    Equilibrium e;
+    try {
+      e.point =
+          operating_point(system, compiled, state_given(system, given, balance, x), parameters);
+      e.linearization = linearize(system, compiled, e.point);
+    } catch (const NotAnOperatingPoint&) {
+      ++result.not_steady;
+      continue;
+    } catch (const std::exception&) {
+      ++result.singular;  // gimbal lock, singular equations
+      continue;
+    }
+    if (found_already(system, balance, starts, e, found)) continue;
+    // at rest where one found already is, in other coordinates (the other Euler angles)
+    const bool rests = e.point.qdot.isZero(0.0);
+    const std::vector<double> key = rests ? configuration.at(e.point) : std::vector<double>{};
+    if (rests && std::any_of(at_rest.begin(), at_rest.end(),
+                             [&](const auto& other) { return configuration.same(key, other); })) {
+      continue;
+    }
+    if (rests) at_rest.push_back(key);
+    // classified: its modes, the continuum through it, the energy methods
+    e.modes = analyse_modes(e.linearization);
+    e.continuum = continuum(system, balance, *solution, e);
+    e.potential_minimum = potential_minimum(e, cyclic, momenta, n);
+    e.amended = !cyclic.empty();
+    found.push_back(std::move(e));
+  }
+  sort_equilibria(found, n);
   return result;
 }
 

@@ -179,6 +179,92 @@ bool nearest_turns(const CompiledSystem& compiled, SimulationStart& start,
   return moved;
 }
 
+// The rates: A_R q̇ + e_R = 0 over the free rates, least norm, into start.qdot (data holds the
+// constraints at start.q). Throws InitialStateError: the rates given violate a constraint.
+void complete_rates(const System& system, SimulationStart& start,
+                    const std::vector<Eigen::Index>& rows, const std::vector<Eigen::Index>& free_v,
+                    const CompiledSystemData& data) {
+  Eigen::VectorXd velocity = data.constraint_matrix * start.qdot + data.constraint_velocity_term;
+  const double scale = 1.0 + start.qdot.cwiseAbs().maxCoeff();
+  // (a residual at round-off needs no correction)
+  if (!free_v.empty() && worst(velocity, rows).second > 1e-14 * scale) {
+    const Eigen::MatrixXd A = data.constraint_matrix(rows, free_v);
+    const Eigen::VectorXd step =
+        Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(A).solve(velocity(rows));
+    for (std::size_t j = 0; j < free_v.size(); ++j) {
+      start.qdot[free_v[j]] -= step[static_cast<Eigen::Index>(j)];
+    }
+    velocity = data.constraint_matrix * start.qdot + data.constraint_velocity_term;
+  }
+  if (const auto [k, r] = worst_relative(velocity, data.constraint_matrix, rows, start.qdot);
+      r > kConstraintTolerance) {
+    throw InitialStateError(
+        "the initial rates cannot satisfy constraint '" +
+        system.constraints[static_cast<std::size_t>(k)].name +
+        "' (A q' + e = " + detail::to_short_text(velocity[k]) + ", rates " +
+        involved(system, data.constraint_matrix, k, start.qdot_given, "der(", ")") +
+        "): the rates given violate it; leave one of them out of initial: (and --set) to have it "
+        "computed, or use --project");
+  }
+}
+
+// The rows that hold must be independent there: A q̈ = −b would have no solution or many.
+void expect_independent(const System& system, const std::vector<Eigen::Index>& rows,
+                        const CompiledSystemData& data) {
+  if (rows.empty()) return;
+  const Eigen::MatrixXd held = data.constraint_matrix(rows, Eigen::all);
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(held.transpose());
+  if (qr.rank() >= static_cast<Eigen::Index>(rows.size())) return;
+  // the rows the pivoting leaves out depend on the others
+  std::string dependent;
+  for (Eigen::Index k = qr.rank(); k < static_cast<Eigen::Index>(rows.size()); ++k) {
+    const Eigen::Index row = rows[static_cast<std::size_t>(qr.colsPermutation().indices()[k])];
+    dependent += (dependent.empty() ? "'" : ", '") +
+                 system.constraints[static_cast<std::size_t>(row)].name + "'";
+  }
+  throw InitialStateError("the constraints are not independent at the initial state: " + dependent +
+                          " depend" + (rows.size() - qr.rank() > 1 ? "" : "s") +
+                          " on the others (a redundant constraint, or a singular "
+                          "configuration); remove it or start elsewhere");
+}
+
+// Unilateral contacts: apart or touching, not inside.
+void expect_not_inside(const System& system, const Eigen::VectorXd& q,
+                       const CompiledSystemData& data) {
+  for (Eigen::Index K = 0; K < data.constraint_position.size(); ++K) {
+    const auto k = static_cast<std::size_t>(K);
+    if (!system.constraints[k].unilateral) continue;
+    if (data.constraint_position[K] < 0.0 &&
+        relative_residual(data.constraint_position[K], data.constraint_matrix.row(K), q) >
+            kConstraintTolerance) {
+      throw InitialStateError("the initial state is inside the unilateral contact '" +
+                              system.constraints[k].name +
+                              "' (Psi = " + detail::to_short_text(data.constraint_position[K]) +
+                              " < 0): start it apart or touching");
+    }
+  }
+}
+
+// What was computed: "x = 0.5", "der(y) = -1".
+std::vector<std::string> computed_values(const System& system, const SimulationStart& start,
+                                         const std::vector<Eigen::Index>& free_q,
+                                         const std::vector<Eigen::Index>& free_v,
+                                         const Eigen::VectorXd& q_given_values) {
+  std::vector<std::string> computed;
+  const auto& q = system.coordinates();
+  for (const Eigen::Index j : free_q) {
+    if (start.q[j] != q_given_values[j]) {
+      computed.push_back(q[j].name + " = " + detail::to_short_text(start.q[j]));
+    }
+  }
+  for (const Eigen::Index j : free_v) {
+    if (start.qdot[j] != 0.0) {
+      computed.push_back("der(" + q[j].name + ") = " + detail::to_short_text(start.qdot[j]));
+    }
+  }
+  return computed;
+}
+
 }  // namespace
 
 double relative_residual(double residual, const Eigen::Ref<const Eigen::RowVectorXd>& gradient,
@@ -237,11 +323,10 @@ void apply_initial_angular_velocities(const System& system, SimulationStart& sta
 std::vector<std::string> complete_initial_state(const System& system,
                                                 const CompiledSystem& compiled,
                                                 SimulationStart& start) {
-  std::vector<std::string> computed;
   const std::size_t m = compiled.constraint_count();
   if (m == 0) {
     expect_no_gimbal_lock(system, start.q, "starts", "start it elsewhere");
-    return computed;
+    return {};
   }
   const std::span<const double> p(start.parameters);
   CompiledSystemData data = compiled.make_data();
@@ -269,72 +354,13 @@ std::vector<std::string> complete_initial_state(const System& system,
 
   // Rates: A_R q̇ + e_R = 0 over the free rates, least norm.
   const std::vector<Eigen::Index> free_v = free_indices(start.qdot_given);
-  Eigen::VectorXd velocity = data.constraint_matrix * start.qdot + data.constraint_velocity_term;
-  const double scale = 1.0 + start.qdot.cwiseAbs().maxCoeff();
-  // (a residual at round-off needs no correction)
-  if (!free_v.empty() && worst(velocity, rows).second > 1e-14 * scale) {
-    const Eigen::MatrixXd A = data.constraint_matrix(rows, free_v);
-    const Eigen::VectorXd step =
-        Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(A).solve(velocity(rows));
-    for (std::size_t j = 0; j < free_v.size(); ++j) {
-      start.qdot[free_v[j]] -= step[static_cast<Eigen::Index>(j)];
-    }
-    velocity = data.constraint_matrix * start.qdot + data.constraint_velocity_term;
-  }
-  if (const auto [k, r] = worst_relative(velocity, data.constraint_matrix, rows, start.qdot);
-      r > kConstraintTolerance) {
-    throw InitialStateError(
-        "the initial rates cannot satisfy constraint '" +
-        system.constraints[static_cast<std::size_t>(k)].name +
-        "' (A q' + e = " + detail::to_short_text(velocity[k]) + ", rates " +
-        involved(system, data.constraint_matrix, k, start.qdot_given, "der(", ")") +
-        "): the rates given violate it; leave one of them out of initial: (and --set) to have it "
-        "computed, or use --project");
-  }
+  complete_rates(system, start, rows, free_v, data);
 
-  // The rows that hold must be independent there: A q̈ = −b would have no solution or many.
-  if (!rows.empty()) {
-    const Eigen::MatrixXd held = data.constraint_matrix(rows, Eigen::all);
-    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(held.transpose());
-    if (qr.rank() < static_cast<Eigen::Index>(rows.size())) {
-      // the rows the pivoting leaves out depend on the others
-      std::string dependent;
-      for (Eigen::Index k = qr.rank(); k < static_cast<Eigen::Index>(rows.size()); ++k) {
-        const Eigen::Index row = rows[static_cast<std::size_t>(qr.colsPermutation().indices()[k])];
-        dependent += (dependent.empty() ? "'" : ", '") +
-                     system.constraints[static_cast<std::size_t>(row)].name + "'";
-      }
-      throw InitialStateError("the constraints are not independent at the initial state: " +
-                              dependent + " depend" + (rows.size() - qr.rank() > 1 ? "" : "s") +
-                              " on the others (a redundant constraint, or a singular "
-                              "configuration); remove it or start elsewhere");
-    }
-  }
-
-  // Unilateral contacts: apart or touching, not inside.
-  for (std::size_t k = 0; k < m; ++k) {
-    const auto K = static_cast<Eigen::Index>(k);
-    if (!system.constraints[k].unilateral) continue;
-    if (data.constraint_position[K] < 0.0 &&
-        relative_residual(data.constraint_position[K], data.constraint_matrix.row(K), start.q) >
-            kConstraintTolerance) {
-      throw InitialStateError("the initial state is inside the unilateral contact '" +
-                              system.constraints[k].name +
-                              "' (Psi = " + detail::to_short_text(data.constraint_position[K]) +
-                              " < 0): start it apart or touching");
-    }
-  }
-
-  // What was computed.
-  const auto& q = system.coordinates();
-  for (const Eigen::Index j : free_q) {
-    if (start.q[j] != q_given_values[j])
-      computed.push_back(q[j].name + " = " + detail::to_short_text(start.q[j]));
-  }
-  for (const Eigen::Index j : free_v) {
-    if (start.qdot[j] != 0.0)
-      computed.push_back("der(" + q[j].name + ") = " + detail::to_short_text(start.qdot[j]));
-  }
+  // The state reached: the rows that hold independent, no contact inside, clear of gimbal lock.
+  expect_independent(system, rows, data);
+  expect_not_inside(system, start.q, data);
+  std::vector<std::string> computed =
+      computed_values(system, start, free_q, free_v, q_given_values);
   // the Euler angles computed too must be clear of gimbal lock
   expect_no_gimbal_lock(system, start.q, "starts", "start it elsewhere");
   return computed;

@@ -405,278 +405,398 @@ SimulationStart initial_state(const System& system,
   return start;
 }
 
-SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
-                           const SimulationStart& start, const SimulationOptions& options,
-                           const std::function<void(const std::vector<double>&)>& on_row) {
-  SimulationSummary summary;
-  const auto n = static_cast<Eigen::Index>(compiled.coordinate_count());
-  const std::span<const double> parameters(start.parameters);
-  CompiledSystemData data = compiled.make_data();
-  Projector projector(compiled, parameters);
-  Contacts contacts(system, compiled, parameters);
-  summary.has_energy = has_energy_column(system);
-  for (const auto& c : system.constraints) summary.multipliers.push_back({c.name});
+namespace {
 
-  // y = (q, q̇), y' = (q̇, q̈). Equations that are not finite at a state the integrator tries give
-  // a derivative that is not finite: a Runge–Kutta step is rejected and shrunk, CVODE takes it as a
-  // recoverable error and retries with a smaller step; why is said if the run fails all the same.
-  Eigen::VectorXd qddot, lambda;
-  std::string not_finite;
-  const OdeFunction rhs = [&](double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
+// observed: T, U, the outputs, the conserved quantities, the stop_when expressions
+constexpr std::size_t kOutputsBegin = 2;
+
+// One run of simulate(): the state that its rows, its events and its summary share, and a
+// member for each job — the start, the step loop, a row, an event, the summary.
+class SimulationRun {
+ public:
+  SimulationRun(const System& system, const CompiledSystem& compiled, const SimulationStart& start,
+                const SimulationOptions& options,
+                const std::function<void(const std::vector<double>&)>& on_row)
+      : system_(system),
+        compiled_(compiled),
+        start_(start),
+        options_(options),
+        on_row_(on_row),
+        n_(static_cast<Eigen::Index>(compiled.coordinate_count())),
+        parameters_(start.parameters),
+        data_(compiled.make_data()),
+        projector_(compiled, parameters_),
+        contacts_(system, compiled, parameters_),
+        observed_(compiled.observation_count()),
+        conserved_begin_(kOutputsBegin + system.outputs.size()),
+        stops_begin_(conserved_begin_ + system.conserved.size()),
+        conserved_initial_(system.conserved.size()),
+        previous_row_time_(start.t0),
+        friction_(system, compiled, parameters_),
+        impulses_(system, compiled, parameters_, start.t0),
+        contact_events_(contacts_.event_count()),
+        friction_events_(friction_.event_count()),
+        impulse_events_(impulses_.event_count()),
+        first_stop_(contact_events_ + friction_events_ + impulse_events_),
+        stop_sign_(system.stop_when.size(), 1.0) {
+    summary_.has_energy = has_energy_column(system);
+    for (const auto& c : system.constraints) summary_.multipliers.push_back({c.name});
+  }
+
+  // The run: the integrator, the start, the step loop; then the summary, whatever stopped it.
+  SimulationSummary run() {
     try {
-      compiled.solve(t, y.head(n), y.tail(n), parameters, qddot, lambda, data);
+      make_run_stepper();
+      Eigen::VectorXd y0 = start_state();
+      const IntegrationCallbacks callbacks = integration_callbacks(y0);
+      const IntegrationResult result =
+          integrate(*stepper_, start_.t0, y0, options_.t_end, options_.output_step, callbacks);
+      take_result(result);
+    } catch (const RowRefused& e) {
+      summary_.ok = false;
+      summary_.message = e.what();
+      summary_.failure_time = e.t;
+      if (stepper_) summary_.stats = stepper_->stats();
+    } catch (const std::exception& e) {
+      // the initial state itself cannot be solved (or its output row failed)
+      summary_.ok = false;
+      summary_.message = e.what();
+      summary_.failure_time = start_.t0;
+    }
+    summarize_energy();
+    return std::move(summary_);
+  }
+
+ private:
+  // y = (q, q̇), y' = (q̇, q̈). Equations that are not finite at a state the integrator tries give
+  // a derivative that is not finite: a Runge–Kutta step is rejected and shrunk, CVODE takes it as
+  // a recoverable error and retries with a smaller step; why is said if the run fails all the
+  // same.
+  void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
+    try {
+      compiled_.solve(t, y.head(n_), y.tail(n_), parameters_, qddot_, lambda_, data_);
     } catch (const NotFiniteState& e) {
-      not_finite = e.what();
+      not_finite_ = e.what();
       dydt.setConstant(std::numeric_limits<double>::quiet_NaN());
       return;
     }
-    dydt.head(n) = y.tail(n);
-    dydt.tail(n) = qddot;
-  };
+    dydt.head(n_) = y.tail(n_);
+    dydt.tail(n_) = qddot_;
+  }
 
-  std::vector<double> observed(compiled.observation_count());
-  std::vector<double> row;
-  // observed: T, U, the outputs, the conserved quantities, the stop_when expressions
-  const std::size_t outputs_begin = 2;
-  const std::size_t n_conserved = system.conserved.size();
-  const std::size_t conserved_begin = outputs_begin + system.outputs.size();
-  const std::size_t stops_begin = conserved_begin + n_conserved;
-  std::vector<double> conserved_initial(n_conserved);
-  double energy_scale = 0.0, max_energy_error = 0.0;
-  double friction_work = 0.0, last_friction_power = 0.0;
-  double previous_row_time = start.t0;
+  // The projection onto the constraint manifolds of the constraints that hold.
+  void project(double t, Eigen::VectorXd& y) {
+    Eigen::VectorXd yq = y.head(n_), yv = y.tail(n_);
+    projector_.project(t, yq, yv);
+    y << yq, yv;
+  }
 
-  // One output row at (t, y): solve for q̈ and λ, observe, check residuals, hand it on.
-  const auto emit = [&](double t, const Eigen::VectorXd& y) {
-    const Eigen::VectorXd q = y.head(n), qdot = y.tail(n);
+  // The integrator the options ask for. RATTLE keeps the constraints itself (a projection would
+  // spoil its symplecticity); CVODE projects inside its step; the others after each step.
+  void make_run_stepper() {
+    project_ = options_.project && compiled_.constraint_count() > 0;
+    inside_ = options_.method == "cvode";
+    symplectic_ = options_.method.starts_with("rattle");
+    if (symplectic_) {
+      natural_.emplace(system_, kane_equations(system_));
+      RattleOptions o;
+      o.step = fixed_step(options_);
+      o.order = options_.method == "rattle6" ? 6 : options_.method == "rattle4" ? 4 : 2;
+      stepper_ = std::make_unique<Rattle>(*natural_, start_.parameters, o);
+      return;
+    }
+    const OdeFunction rhs = [this](double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
+      derivative(t, y, dydt);
+    };
+    std::function<void(double, Eigen::VectorXd&)> projection;
+    if (project_ && inside_) projection = [this](double t, Eigen::VectorXd& y) { project(t, y); };
+    stepper_ = make_stepper(options_, rhs, projection);
+  }
+
+  // The start y0 = (q, q̇): the contacts that hold, onto the constraint manifolds, the rough
+  // contacts sticking or slipping.
+  Eigen::VectorXd start_state() {
+    Eigen::VectorXd q = start_.q, qdot = start_.qdot;
+    if (contacts_.any()) {
+      // the contacts that hold at the start, then onto their manifolds with the rest
+      projector_.set_active(contacts_.active());
+      add_phases(start_.t0, contacts_.start(start_.t0, q, qdot));
+      use_phase();
+    }
+    if (options_.project) summary_.initial_projection = projector_.project(start_.t0, q, qdot);
+    if (friction_events_ > 0) add_phases(start_.t0, friction_.start(start_.t0, q, qdot, data_));
+    Eigen::VectorXd y0(2 * n_);
+    y0 << q, qdot;
+    return y0;
+  }
+
+  // The step loop's callbacks: a row at each output time, the events (each stop_when armed by
+  // its sign at the start), and after each step the signal, the Euler charts, the projection.
+  IntegrationCallbacks integration_callbacks(const Eigen::VectorXd& y0) {
+    IntegrationCallbacks callbacks;
+    callbacks.output = [this](double t, const Eigen::VectorXd& y) { emit(t, y); };
+    if (first_stop_ + stop_sign_.size() > 0) {
+      arm_stops(y0);
+      callbacks.events = [this](double t, const Eigen::VectorXd& y, Eigen::VectorXd& g) {
+        event_values(t, y, g);
+      };
+      callbacks.on_event = [this](double t, Eigen::VectorXd& y, std::size_t which) {
+        return on_event(t, y, which);
+      };
+    }
+    callbacks.post_step = [this](double t, Eigen::VectorXd& y) {
+      // a stiff run may take seconds between rows: a signal is looked at every step
+      if (options_.interrupted && options_.interrupted()) {
+        throw std::runtime_error("interrupted (a signal)");
+      }
+      watch_euler_charts(system_, t, y, summary_);
+      if (project_ && !inside_ && !symplectic_) project(t, y);
+    };
+    return callbacks;
+  }
+
+  // Each stop_when expression's sign at the start, so that its event is its crossing of 0.
+  void arm_stops(const Eigen::VectorXd& y0) {
+    Eigen::VectorXd g0;
+    event_values(start_.t0, y0, g0);
+    for (std::size_t s = 0; s < stop_sign_.size(); ++s) {
+      const double value = g0[static_cast<Eigen::Index>(first_stop_ + s)];
+      if (value == 0.0) {
+        throw std::invalid_argument("stop_when '" + system_.stop_when[s].name +
+                                    "' is 0 at the start");
+      }
+      stop_sign_[s] = value > 0 ? 1.0 : -1.0;
+    }
+  }
+
+  // One output row at (t, y): solve for q̈ and λ, observe, account, check residuals, hand it on.
+  void emit(double t, const Eigen::VectorXd& y) {
+    const Eigen::VectorXd q = y.head(n_), qdot = y.tail(n_);
+    solve_row(t, q, qdot);
+    const double T = observed_[0], U = observed_[1], E = T + U;
+    fill_row(t, q, qdot, E);
+    if (summary_.rows == 0) record_first_row(E);
+    summary_.energy_final = E;
+    summary_.last_row_time = t;
+    record_multipliers();
+    energy_scale_ = std::max(energy_scale_, T + std::abs(U));
+    add_friction_work(t);
+    max_energy_error_ = std::max(max_energy_error_, std::abs(E - summary_.energy_initial));
+    for (std::size_t c = 0; c < conserved_initial_.size(); ++c) {
+      const double value = observed_[conserved_begin_ + c];
+      summary_.conserved_drift[c].max_change =
+          std::max(summary_.conserved_drift[c].max_change, std::abs(value - conserved_initial_[c]));
+    }
+    if (compiled_.constraint_count() > 0) record_residuals(t, q, qdot);
+    // a row the caller cannot take (a full disk) ends the run there; the rows before it stay
     try {
-      compiled.solve(t, q, qdot, parameters, qddot, lambda, data);
+      on_row_(row_);
+    } catch (const std::exception& e) {
+      throw RowRefused(t, e.what());
+    }
+    ++summary_.rows;
+  }
+
+  // q̈ and λ at a row, and what is observed there.
+  void solve_row(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
+    try {
+      compiled_.solve(t, q, qdot, parameters_, qddot_, lambda_, data_);
     } catch (const NotFiniteState& e) {
       // the row's state, interpolated between steps, is off where the equations are finite
       throw RowRefused(t, std::string(e.what()) +
                               " (the state the integrator gives for this row is outside where the "
                               "equations are finite: a tighter --rtol keeps it inside)");
     }
-    compiled.observe(t, q, qdot, qddot, lambda, parameters, observed, data);
-    row.assign(1, t);
-    row.insert(row.end(), q.data(), q.data() + n);
-    row.insert(row.end(), qdot.data(), qdot.data() + n);
-    const double T = observed[0], U = observed[1], E = T + U;
-    if (summary.has_energy) row.push_back(E);
-    row.insert(row.end(), lambda.data(), lambda.data() + lambda.size());
-    row.insert(row.end(), observed.begin() + outputs_begin, observed.begin() + stops_begin);
-    if (summary.rows == 0) {
-      summary.energy_initial = E;
-      for (std::size_t c = 0; c < n_conserved; ++c) {
-        conserved_initial[c] = observed[conserved_begin + c];
-        summary.conserved_drift.push_back({system.conserved[c].name, conserved_initial[c], 0.0});
-      }
+    compiled_.observe(t, q, qdot, qddot_, lambda_, parameters_, observed_, data_);
+  }
+
+  // The row's columns: t, q, q̇, E (when the forces all have potentials), λ, the outputs and the
+  // conserved quantities.
+  void fill_row(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot, double E) {
+    row_.assign(1, t);
+    row_.insert(row_.end(), q.data(), q.data() + n_);
+    row_.insert(row_.end(), qdot.data(), qdot.data() + n_);
+    if (summary_.has_energy) row_.push_back(E);
+    row_.insert(row_.end(), lambda_.data(), lambda_.data() + lambda_.size());
+    row_.insert(row_.end(), observed_.begin() + kOutputsBegin, observed_.begin() + stops_begin_);
+  }
+
+  // The first row's E0 and conserved values c0, from which the drifts are measured.
+  void record_first_row(double E) {
+    summary_.energy_initial = E;
+    for (std::size_t c = 0; c < conserved_initial_.size(); ++c) {
+      conserved_initial_[c] = observed_[conserved_begin_ + c];
+      summary_.conserved_drift.push_back({system_.conserved[c].name, conserved_initial_[c], 0.0});
     }
-    summary.energy_final = E;
-    summary.last_row_time = t;
-    for (std::size_t k = 0; k < summary.multipliers.size(); ++k) {
-      if (!contacts.active()[k]) continue;
-      auto& range = summary.multipliers[k];
-      const double value = lambda[static_cast<Eigen::Index>(k)];
+  }
+
+  // Each multiplier's range over the rows where its constraint holds.
+  void record_multipliers() {
+    for (std::size_t k = 0; k < summary_.multipliers.size(); ++k) {
+      if (!contacts_.active()[k]) continue;
+      auto& range = summary_.multipliers[k];
+      const double value = lambda_[static_cast<Eigen::Index>(k)];
       range.min = range.held ? std::min(range.min, value) : value;
       range.max = range.held ? std::max(range.max, value) : value;
       range.held = true;
     }
-    energy_scale = std::max(energy_scale, T + std::abs(U));
-    // the friction's power R_t . v_slip, integrated over the rows
-    double friction_power = 0.0;
-    for (std::size_t c = 0; c < data.friction.size(); ++c) {
-      const FrictionValues& f = data.friction[c];
-      friction_power += f.tangential_part(data.contact_force[c]).dot(f.slip);
-    }
-    if (summary.rows > 0) {
-      friction_work += 0.5 * (friction_power + last_friction_power) * (t - previous_row_time);
-    }
-    last_friction_power = friction_power;
-    previous_row_time = t;
-    max_energy_error = std::max(max_energy_error, std::abs(E - summary.energy_initial));
-    for (std::size_t c = 0; c < n_conserved; ++c) {
-      const double c0 = conserved_initial[c];
-      const double value = observed[conserved_begin + c];
-      summary.conserved_drift[c].max_change =
-          std::max(summary.conserved_drift[c].max_change, std::abs(value - c0));
-    }
-    if (compiled.constraint_count() > 0) {
-      compiled.constraints(t, q, qdot, parameters, data);
-      // the constraints that hold (a free unilateral one has Ψ > 0, its rate anything)
-      const Eigen::VectorXd velocity_residual =
-          data.constraint_matrix * qdot + data.constraint_velocity_term;
-      for (std::size_t k = 0; k < compiled.constraint_count(); ++k) {
-        const auto K = static_cast<Eigen::Index>(k);
-        if (!contacts.active()[k]) continue;
-        if (compiled.is_position_constraint()[k]) {
-          summary.max_position_residual =
-              std::max(summary.max_position_residual, std::abs(data.constraint_position[K]));
-        }
-        summary.max_velocity_residual =
-            std::max(summary.max_velocity_residual, std::abs(velocity_residual[K]));
-      }
-    }
-    // a row the caller cannot take (a full disk) ends the run there; the rows before it stay
-    try {
-      on_row(row);
-    } catch (const std::exception& e) {
-      throw RowRefused(t, e.what());
-    }
-    ++summary.rows;
-  };
+  }
 
-  // The phase of the unilateral constraints, in the solver and the projector.
-  const auto use_phase = [&] {
-    data.active = contacts.active();
-    projector.set_active(contacts.active());
-  };
+  // The friction's power R_t · v_slip, integrated over the rows by the trapezoidal rule.
+  void add_friction_work(double t) {
+    double friction_power = 0.0;
+    for (std::size_t c = 0; c < data_.friction.size(); ++c) {
+      const FrictionValues& f = data_.friction[c];
+      friction_power += f.tangential_part(data_.contact_force[c]).dot(f.slip);
+    }
+    if (summary_.rows > 0) {
+      friction_work_ += 0.5 * (friction_power + last_friction_power_) * (t - previous_row_time_);
+    }
+    last_friction_power_ = friction_power;
+    previous_row_time_ = t;
+  }
+
+  // max |Ψ| and max |A q̇ + e| over the constraints that hold (a free unilateral one has Ψ > 0,
+  // its rate anything).
+  void record_residuals(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
+    compiled_.constraints(t, q, qdot, parameters_, data_);
+    const Eigen::VectorXd velocity_residual =
+        data_.constraint_matrix * qdot + data_.constraint_velocity_term;
+    for (std::size_t k = 0; k < compiled_.constraint_count(); ++k) {
+      const auto K = static_cast<Eigen::Index>(k);
+      if (!contacts_.active()[k]) continue;
+      if (compiled_.is_position_constraint()[k]) {
+        summary_.max_position_residual =
+            std::max(summary_.max_position_residual, std::abs(data_.constraint_position[K]));
+      }
+      summary_.max_velocity_residual =
+          std::max(summary_.max_velocity_residual, std::abs(velocity_residual[K]));
+    }
+  }
+
   // Event functions: the unilateral contacts', the rough contacts', the applied impulses' (at
   // their times), then each stop_when expression times its sign at the start.
-  FrictionPhases friction(system, compiled, parameters);
-  AppliedImpulses impulses(system, compiled, parameters, start.t0);
-  const std::size_t U = contacts.event_count(), F = friction.event_count(),
-                    I = impulses.event_count(), UFI = U + F + I;
-  std::vector<double> stop_sign(system.stop_when.size(), 1.0);
-  const auto events = [&](double t, const Eigen::VectorXd& y, Eigen::VectorXd& g) {
-    g.resize(static_cast<Eigen::Index>(UFI + stop_sign.size()));
-    const Eigen::VectorXd q = y.head(n), qdot = y.tail(n);
-    if (U > 0) contacts.events(t, q, qdot, std::span(g.data(), U));
-    if (F > 0) friction.events(t, q, qdot, data, std::span(g.data() + U, F));
-    if (I > 0) impulses.events(t, std::span(g.data() + U + F, I));
-    if (stop_sign.empty()) return;
-    compiled.solve(t, q, qdot, parameters, qddot, lambda, data);
-    compiled.observe(t, q, qdot, qddot, lambda, parameters, observed, data);
-    for (std::size_t s = 0; s < stop_sign.size(); ++s) {
-      g[static_cast<Eigen::Index>(UFI + s)] = stop_sign[s] * observed[stops_begin + s];
+  void event_values(double t, const Eigen::VectorXd& y, Eigen::VectorXd& g) {
+    g.resize(static_cast<Eigen::Index>(first_stop_ + stop_sign_.size()));
+    const Eigen::VectorXd q = y.head(n_), qdot = y.tail(n_);
+    const std::size_t U = contact_events_, F = friction_events_, I = impulse_events_;
+    if (U > 0) contacts_.events(t, q, qdot, std::span(g.data(), U));
+    if (F > 0) friction_.events(t, q, qdot, data_, std::span(g.data() + U, F));
+    if (I > 0) impulses_.events(t, std::span(g.data() + U + F, I));
+    if (stop_sign_.empty()) return;
+    compiled_.solve(t, q, qdot, parameters_, qddot_, lambda_, data_);
+    compiled_.observe(t, q, qdot, qddot_, lambda_, parameters_, observed_, data_);
+    for (std::size_t s = 0; s < stop_sign_.size(); ++s) {
+      g[static_cast<Eigen::Index>(first_stop_ + s)] = stop_sign_[s] * observed_[stops_begin_ + s];
     }
-  };
+  }
+
   // An event: a contact made or lost, a rough contact sticking or slipping, an impulse, or a stop.
-  const auto on_event = [&](double t, Eigen::VectorXd& y, std::size_t which) {
-    Eigen::VectorXd yq = y.head(n), yv = y.tail(n);
+  AfterEvent on_event(double t, Eigen::VectorXd& y, std::size_t which) {
+    const std::size_t U = contact_events_, F = friction_events_;
+    Eigen::VectorXd yq = y.head(n_), yv = y.tail(n_);
     if (which < U) {
-      summary.phases.push_back({t, contacts.handle(t, yq, yv, which)});
+      summary_.phases.push_back({t, contacts_.handle(t, yq, yv, which)});
       use_phase();
       y << yq, yv;
     } else if (which < U + F) {
       // a slip that only turned re-arms its event: a new start (the steps past it assumed the
       // old direction), without a row of its own
-      std::vector<std::string> what = friction.handle(t, yq, yv, which - U, data);
+      std::vector<std::string> what = friction_.handle(t, yq, yv, which - U, data_);
       if (what.empty()) return AfterEvent::restart_quietly;
-      for (auto& line : what) summary.phases.push_back({t, std::move(line)});
-    } else if (which < UFI) {
+      add_phases(t, std::move(what));
+    } else if (which < first_stop_) {
       // the rates jump; the rough contacts stick or slide from the new rates
-      summary.phases.push_back({t, impulses.apply(t, yq, yv, which - U - F, contacts.active())});
-      for (auto& line : friction.start(t, yq, yv, data)) {
-        summary.phases.push_back({t, std::move(line)});
-      }
+      summary_.phases.push_back({t, impulses_.apply(t, yq, yv, which - U - F, contacts_.active())});
+      add_phases(t, friction_.start(t, yq, yv, data_));
       y << yq, yv;
     } else {
-      summary.phases.push_back(
-          {t, "stop_when '" + system.stop_when[which - UFI].name + "' reached 0"});
+      summary_.phases.push_back(
+          {t, "stop_when '" + system_.stop_when[which - first_stop_].name + "' reached 0"});
       return AfterEvent::stop;
     }
     return AfterEvent::restart;
-  };
+  }
 
-  // Integrate with the projection after every step; rows come through `emit`. The stepper
-  // outlives the attempt: a run its rows stop (Ctrl-C, a full disk) still counts its steps.
-  std::optional<CompiledNaturalSystem> natural;
-  std::unique_ptr<Stepper> stepper;
-  try {
-    const bool project = options.project && compiled.constraint_count() > 0;
-    const std::function<void(double, Eigen::VectorXd&)> projection = [&](double t,
-                                                                         Eigen::VectorXd& y) {
-      Eigen::VectorXd yq = y.head(n), yv = y.tail(n);
-      projector.project(t, yq, yv);
-      y << yq, yv;
-    };
-    const bool inside = options.method == "cvode";
-    // RATTLE keeps the constraints itself (a projection would spoil its symplecticity)
-    const bool symplectic = options.method.starts_with("rattle");
-    if (symplectic) {
-      natural.emplace(system, kane_equations(system));
-      RattleOptions o;
-      o.step = fixed_step(options);
-      o.order = options.method == "rattle6" ? 6 : options.method == "rattle4" ? 4 : 2;
-      stepper = std::make_unique<Rattle>(*natural, start.parameters, o);
-    } else {
-      stepper = make_stepper(options, rhs, project && inside ? projection : nullptr);
-    }
-    Eigen::VectorXd q = start.q, qdot = start.qdot;
-    if (contacts.any()) {
-      // the contacts that hold at the start, then onto their manifolds with the rest
-      projector.set_active(contacts.active());
-      for (auto& line : contacts.start(start.t0, q, qdot)) {
-        summary.phases.push_back({start.t0, std::move(line)});
-      }
-      use_phase();
-    }
-    if (options.project) summary.initial_projection = projector.project(start.t0, q, qdot);
-    if (F > 0) {
-      for (auto& line : friction.start(start.t0, q, qdot, data)) {
-        summary.phases.push_back({start.t0, std::move(line)});
-      }
-    }
-    Eigen::VectorXd y0(2 * n);
-    y0 << q, qdot;
-    IntegrationCallbacks callbacks;
-    callbacks.output = emit;
-    if (UFI + stop_sign.size() > 0) {
-      Eigen::VectorXd g0;
-      events(start.t0, y0, g0);
-      for (std::size_t s = 0; s < stop_sign.size(); ++s) {
-        const double value = g0[static_cast<Eigen::Index>(UFI + s)];
-        if (value == 0.0) {
-          throw std::invalid_argument("stop_when '" + system.stop_when[s].name +
-                                      "' is 0 at the start");
-        }
-        stop_sign[s] = value > 0 ? 1.0 : -1.0;
-      }
-      callbacks.events = events;
-      callbacks.on_event = on_event;
-    }
-    callbacks.post_step = [&](double t, Eigen::VectorXd& y) {
-      // a stiff run may take seconds between rows: a signal is looked at every step
-      if (options.interrupted && options.interrupted()) {
-        throw std::runtime_error("interrupted (a signal)");
-      }
-      watch_euler_charts(system, t, y, summary);
-      if (project && !inside && !symplectic) projection(t, y);
-    };
-    const IntegrationResult result =
-        integrate(*stepper, start.t0, y0, options.t_end, options.output_step, callbacks);
-    summary.ok = result.ok;
-    summary.stopped = result.stopped;
-    summary.event_rows = result.event_rows;
-    summary.message =
-        result.ok ? result.message : failure_near_gimbal_lock(system, result.y, result.message);
-    if (!result.ok && !not_finite.empty()) {
-      summary.message +=
-          " (the equations were not finite at a state the integrator tried: " + not_finite + ")";
-    }
-    summary.failure_time = result.t_failure;
-    summary.stats = result.stats;
-  } catch (const RowRefused& e) {
-    summary.ok = false;
-    summary.message = e.what();
-    summary.failure_time = e.t;
-    if (stepper) summary.stats = stepper->stats();
-  } catch (const std::exception& e) {
-    // the initial state itself cannot be solved (or its output row failed)
-    summary.ok = false;
-    summary.message = e.what();
-    summary.failure_time = start.t0;
+  // The phase of the unilateral constraints, in the solver and the projector.
+  void use_phase() {
+    data_.active = contacts_.active();
+    projector_.set_active(contacts_.active());
   }
-  summary.energy_relative_drift = max_energy_error / std::max(energy_scale, 1e-300);
-  // what changed the energy: the model's drive and impulses, the run's friction and impacts
-  summary.energy_not_conserved = energy_changed_by(system);
-  const std::string dissipated =
-      dissipation_in_run(friction_work, energy_scale, contacts.dissipative_impacts());
-  if (!dissipated.empty()) {
-    summary.energy_not_conserved += (summary.energy_not_conserved.empty() ? "" : "; ") + dissipated;
+
+  // Lines of what happened at t, into the summary's phases.
+  void add_phases(double t, std::vector<std::string> lines) {
+    for (auto& line : lines) summary_.phases.push_back({t, std::move(line)});
   }
-  return summary;
+
+  // What the step loop ended with: success, a stop, or a failure and why (near gimbal lock, or
+  // where the equations were not finite).
+  void take_result(const IntegrationResult& result) {
+    summary_.ok = result.ok;
+    summary_.stopped = result.stopped;
+    summary_.event_rows = result.event_rows;
+    summary_.message =
+        result.ok ? result.message : failure_near_gimbal_lock(system_, result.y, result.message);
+    if (!result.ok && !not_finite_.empty()) {
+      summary_.message +=
+          " (the equations were not finite at a state the integrator tried: " + not_finite_ + ")";
+    }
+    summary_.failure_time = result.t_failure;
+    summary_.stats = result.stats;
+  }
+
+  // The energy's drift, and what changed it: the model's drive and impulses, the run's friction
+  // and impacts.
+  void summarize_energy() {
+    summary_.energy_relative_drift = max_energy_error_ / std::max(energy_scale_, 1e-300);
+    summary_.energy_not_conserved = energy_changed_by(system_);
+    const std::string dissipated =
+        dissipation_in_run(friction_work_, energy_scale_, contacts_.dissipative_impacts());
+    if (!dissipated.empty()) {
+      summary_.energy_not_conserved +=
+          (summary_.energy_not_conserved.empty() ? "" : "; ") + dissipated;
+    }
+  }
+
+  const System& system_;
+  const CompiledSystem& compiled_;
+  const SimulationStart& start_;
+  const SimulationOptions& options_;
+  const std::function<void(const std::vector<double>&)>& on_row_;
+  const Eigen::Index n_;
+  const std::span<const double> parameters_;
+  SimulationSummary summary_;
+  CompiledSystemData data_;
+  Projector projector_;
+  Contacts contacts_;
+  // the solver's q̈ and λ, the observed values, the row handed on
+  Eigen::VectorXd qddot_, lambda_;
+  std::string not_finite_;
+  std::vector<double> observed_;
+  std::vector<double> row_;
+  const std::size_t conserved_begin_, stops_begin_;
+  // the rows' accounts: c0, E's scale and largest change, the friction's work
+  std::vector<double> conserved_initial_;
+  double energy_scale_ = 0.0, max_energy_error_ = 0.0;
+  double friction_work_ = 0.0, last_friction_power_ = 0.0;
+  double previous_row_time_;
+  FrictionPhases friction_;
+  AppliedImpulses impulses_;
+  // the event functions: contacts, rough contacts, impulses, then the stop_when expressions
+  const std::size_t contact_events_, friction_events_, impulse_events_, first_stop_;
+  std::vector<double> stop_sign_;
+  // how the run integrates: the stepper (with RATTLE's natural system), where it projects
+  bool project_ = false, inside_ = false, symplectic_ = false;
+  std::optional<CompiledNaturalSystem> natural_;
+  std::unique_ptr<Stepper> stepper_;
+};
+
+}  // namespace
+
+SimulationSummary simulate(const System& system, const CompiledSystem& compiled,
+                           const SimulationStart& start, const SimulationOptions& options,
+                           const std::function<void(const std::vector<double>&)>& on_row) {
+  return SimulationRun(system, compiled, start, options, on_row).run();
 }
 
 }  // namespace unidyn

@@ -252,6 +252,18 @@ class ModelReader {
   BodyVisual shape_visual(const YAML::Node& node, const std::string& shape, const System& system);
   void read_definitions(const YAML::Node& node, System& system);
   void read_forces(const YAML::Node& node, System& system);
+  ForceElement read_force(const YAML::Node& entry, const System& system);
+  ForceElement read_spring(const YAML::Node& spec, const System& system, const Scope& scope);
+  ForceElement read_damper(const YAML::Node& spec, const System& system, const Scope& scope);
+  ForceElement read_applied_force(const YAML::Node& spec, const System& system, const Scope& scope);
+  ForceElement read_moment(const YAML::Node& spec, const System& system, const Scope& scope);
+  ForceElement read_gravity_gradient(const YAML::Node& spec, const System& system,
+                                     const Scope& scope);
+  ForceElement read_torsion(const std::string& kind, const YAML::Node& spec, const System& system,
+                            const Scope& scope);
+  ForceElement read_gravitation(const YAML::Node& spec, const System& system, const Scope& scope);
+  std::pair<ForcePoint, ForcePoint> force_ends(const YAML::Node& spec, const std::string& kind,
+                                               const System& system, const Scope& scope);
   ForcePoint force_point(const YAML::Node& node, const System& system, const Scope& scope);
   std::pair<std::size_t, std::vector<AngleTorque>> torsion_angle(
       const YAML::Node& spec, const System& system, const std::string& what,

@@ -71,31 +71,39 @@ std::string latex_equation(const std::string& lead, const std::vector<std::strin
   return text + line + tail;
 }
 
-void write_textbook_lagrange(std::ostream& out, const System& system, const EquationsOfMotion& eq,
-                             EquationFormat format, bool intermediates) {
-  const bool latex = format == EquationFormat::latex;
-  const auto& q = system.coordinates();
-  std::vector<Expr> rates, accelerations, multipliers;
-  for (const auto& c : q) {
-    rates.push_back(c.rate);
-    accelerations.push_back(c.acceleration);
-  }
+namespace {
+
+// The terms of Lagrange's equations as the book writes them: T and U, each equation's left side
+// (Σ_j M_ij q̈^j, then −f_i by products of rates) and right side (Σ_k λ_k a_k^i, by the
+// multipliers), each constraint; the intermediate quantities z, when named.
+struct LagrangeTerms {
+  std::vector<GroupedTerm> T, U, psi;
+  std::vector<std::vector<GroupedTerm>> left, right, forcing;
+  ExprMatrix M;
+  Intermediates z;
+};
+
+// U, the constraints Ψ_k and the constraint forces Σ_k λ_k a_k^i of each equation.
+void constraint_terms(const System& system, const EquationsOfMotion& eq, LagrangeTerms& terms) {
+  std::vector<Expr> multipliers;
   for (const auto& c : system.constraints) multipliers.push_back(c.multiplier);
-  // every grouped term: T, U, each equation's left and right side (Σ_j M_ij q̈^j and −f_i by
-  // products of rates = Σ_k λ_k a_k^i), each constraint; those free of M first
-  const std::size_t n = q.size();
-  std::vector<GroupedTerm> U{{eq.potential_energy, 1}}, psi;
-  for (const auto& c : system.constraints) psi.push_back({c.expression, 1});
-  std::vector<std::vector<GroupedTerm>> right(n);
+  const std::size_t n = system.coordinates().size();
+  terms.U = {{eq.potential_energy, 1}};
+  for (const auto& c : system.constraints) terms.psi.push_back({c.expression, 1});
+  terms.right.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     Expr sum = 0;
     for (std::size_t k = 0; k < system.constraints.size(); ++k) {
       sum += multipliers[k] * eq.constraint_matrix(k, i);
     }
-    right[i] = group_by_monomials(sum, multipliers, as_it_is);
+    terms.right[i] = group_by_monomials(sum, multipliers, as_it_is);
   }
-  // M entry by entry, M_ji taken from M_ij where they are equal (M is symmetric); simplified
-  // together with the coefficients free of M (so that the processes share more work at once)
+}
+
+// M entry by entry, M_ji taken from M_ij where they are equal (M is symmetric); simplified
+// together with the coefficients free of M (so that the processes share more work at once).
+void short_mass_matrix(const EquationsOfMotion& eq, LagrangeTerms& terms) {
+  const std::size_t n = eq.mass_matrix.rows;
   std::vector<bool> mirrored(n * n, false);
   std::vector<Expr> entries;
   for (std::size_t i = 0; i < n; ++i) {
@@ -105,43 +113,50 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
       if (!mirrored[i * n + j]) entries.push_back(eq.mass_matrix(i, j));
     }
   }
-  for (const auto* group : {&U, &psi}) {
+  for (const auto* group : {&terms.U, &terms.psi}) {
     for (const GroupedTerm& t : *group) entries.push_back(t.coefficient);
   }
-  for (const auto& group : right) {
+  for (const auto& group : terms.right) {
     for (const GroupedTerm& t : group) entries.push_back(t.coefficient);
   }
   const std::vector<Expr> short_entries = textbook_simplify_all(entries);
-  ExprMatrix M(n, n);
+  terms.M = ExprMatrix(n, n);
   for (std::size_t i = 0, k = 0; i < n; ++i) {
-    for (std::size_t j = 0; j < n; ++j)
-      M(i, j) = mirrored[i * n + j] ? M(j, i) : short_entries[k++];
+    for (std::size_t j = 0; j < n; ++j) {
+      terms.M(i, j) = mirrored[i * n + j] ? terms.M(j, i) : short_entries[k++];
+    }
   }
+}
 
-  // T and the convective terms read off the short M by the covariant form (4.30) where exact
-  // evaluation shows them equal to the derived ones; else dug out of the derived expressions
-  end_phase("print: mass matrix, U, constraint terms");
-  const std::optional<Expr> quadratic = quadratic_kinetic_energy(system, eq, M);
-  const std::vector<std::optional<Expr>> convective = covariant_convective_terms(system, eq, M);
+// T and the convective terms read off the short M by the covariant form (4.30) where exact
+// evaluation shows them equal to the derived ones; else dug out of the derived expressions. Then
+// −f_i = c_i + ∂U/∂q^i − Φ_i of each equation, by products of rates.
+void kinetic_terms(const System& system, const EquationsOfMotion& eq, LagrangeTerms& terms) {
+  const auto& q = system.coordinates();
+  std::vector<Expr> rates;
+  for (const auto& c : q) rates.push_back(c.rate);
+  const std::optional<Expr> quadratic = quadratic_kinetic_energy(system, eq, terms.M);
+  const std::vector<std::optional<Expr>> convective =
+      covariant_convective_terms(system, eq, terms.M);
   end_phase("print: convective terms (4.25)");
-  std::vector<GroupedTerm> T =
-      group_by_monomials(quadratic.value_or(eq.kinetic_energy), rates, as_it_is);
+  terms.T = group_by_monomials(quadratic.value_or(eq.kinetic_energy), rates, as_it_is);
   end_phase("print: T grouped");
-  // each equation's left side: its row of M (simplified already), then −f_i's terms
-  std::vector<std::vector<GroupedTerm>> left(n), forcing(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    // −f_i = c_i + ∂U/∂q^i − Φ_i
+  terms.forcing.resize(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) {
     const Expr minus_forcing =
         convective[i]
             ? *convective[i] + derivative(eq.potential_energy, q[i].value) - eq.generalized_force[i]
             : -eq.forcing[i];
-    forcing[i] = group_by_monomials(minus_forcing, rates, as_it_is);
+    terms.forcing[i] = group_by_monomials(minus_forcing, rates, as_it_is);
   }
   end_phase("print: equations, grouped");
-  // every coefficient in the book's form at once (M's and those free of M remembered from
-  // above), the vanishing ones dropped
-  std::vector<std::vector<GroupedTerm>*> groups{&T, &U, &psi};
-  for (auto* sides : {&forcing, &right}) {
+}
+
+// Every coefficient in the book's form at once (M's and those free of M remembered from above),
+// the vanishing ones dropped; then each left side: its row of M, then −f_i's terms.
+void simplify_coefficients(const System& system, LagrangeTerms& terms) {
+  std::vector<std::vector<GroupedTerm>*> groups{&terms.T, &terms.U, &terms.psi};
+  for (auto* sides : {&terms.forcing, &terms.right}) {
     for (auto& group : *sides) groups.push_back(&group);
   }
   std::vector<Expr> coefficients;
@@ -153,84 +168,108 @@ void write_textbook_lagrange(std::ostream& out, const System& system, const Equa
   for (auto* group : groups) {
     for (GroupedTerm& t : *group) t.coefficient = short_coefficients[next++];
     // (U and the constraints keep their one term, 0 or not)
-    if (group == &U || group == &psi) continue;
+    if (group == &terms.U || group == &terms.psi) continue;
     std::erase_if(*group, [](const GroupedTerm& t) { return t.coefficient.is_zero(); });
   }
+  const auto& q = system.coordinates();
+  terms.left.resize(q.size());
   for (std::size_t i = 0; i < q.size(); ++i) {
     for (std::size_t j = 0; j < q.size(); ++j) {
-      if (!M(i, j).is_zero()) left[i].push_back({M(i, j), accelerations[j]});
+      if (!terms.M(i, j).is_zero()) terms.left[i].push_back({terms.M(i, j), q[j].acceleration});
     }
-    left[i].insert(left[i].end(), forcing[i].begin(), forcing[i].end());
+    terms.left[i].insert(terms.left[i].end(), terms.forcing[i].begin(), terms.forcing[i].end());
   }
   end_phase("print: coefficients (simplified)");
-  // --form zees: the coefficients' repeated subexpressions named z1, z2, …
+}
+
+// --form zees: the coefficients' repeated subexpressions named z1, z2, …
+void name_intermediates(LagrangeTerms& terms) {
   std::vector<GroupedTerm*> all;
-  for (auto* group : {&T, &U, &psi}) {
+  for (auto* group : {&terms.T, &terms.U, &terms.psi}) {
     for (GroupedTerm& t : *group) all.push_back(&t);
   }
-  for (auto* sides : {&left, &right}) {
+  for (auto* sides : {&terms.left, &terms.right}) {
     for (auto& group : *sides) {
       for (GroupedTerm& t : group) all.push_back(&t);
     }
   }
-  Intermediates z;
-  if (intermediates) {
-    std::vector<Expr> printed;
-    for (const GroupedTerm* t : all) printed.push_back(t->coefficient);
-    z = common_subexpressions(printed);
-    for (std::size_t k = 0; k < all.size(); ++k) all[k]->coefficient = z.expressions[k];
+  std::vector<Expr> printed;
+  for (const GroupedTerm* t : all) printed.push_back(t->coefficient);
+  terms.z = common_subexpressions(printed);
+  for (std::size_t k = 0; k < all.size(); ++k) all[k]->coefficient = terms.z.expressions[k];
+}
+
+// The equations as text: z, T, U, each coordinate's equation, each constraint, a line each.
+void write_lagrange_text(std::ostream& out, const System& system, const LagrangeTerms& terms) {
+  const auto& q = system.coordinates();
+  for (std::size_t k = 0; k < terms.z.names.size(); ++k) {
+    out << "  " << terms.z.names[k] << " = " << to_text(terms.z.values[k]) << "\n";
   }
-  const std::string U_text =
-      latex ? to_latex(U.front().coefficient) : to_text(U.front().coefficient);
+  out << "  T = " << join_terms(texts(terms.T, false)) << "\n";
+  out << "  U = " << to_text(terms.U.front().coefficient) << "\n";
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    out << "  [" << q[i].name << "]  " << join_terms(texts(terms.left[i], false)) << " = "
+        << join_terms(texts(terms.right[i], false)) << "\n";
+  }
+  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+    const Constraint& c = system.constraints[k];
+    out << "  constraint " << c.name << " (" << constraint_kind_text(c)
+        << "): " << to_text(terms.psi[k].coefficient) << " = 0, multiplier "
+        << to_text(c.multiplier) << "\n";
+  }
+}
+
+// The equations as LaTeX: one align, a line each, labelled eq:<coordinate> or eq:<constraint>.
+void write_lagrange_latex(std::ostream& out, const System& system, const LagrangeTerms& terms) {
+  const auto& q = system.coordinates();
+  std::vector<std::string> lines;
+  for (std::size_t k = 0; k < terms.z.names.size(); ++k) {
+    lines.push_back("  & " + to_latex(terms.z.names[k]) + " = " + to_latex(terms.z.values[k]) +
+                    " \\nonumber");
+  }
+  lines.push_back(latex_equation("T = ", texts(terms.T, true), " \\nonumber"));
+  lines.push_back("  & U = " + to_latex(terms.U.front().coefficient) + " \\nonumber");
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const std::string rhs = join_terms(texts(terms.right[i], true));
+    lines.push_back(latex_equation("", texts(terms.left[i], true),
+                                   " = " + rhs + " \\label{eq:" + q[i].name + "}"));
+  }
+  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
+    const Constraint& c = system.constraints[k];
+    lines.push_back("  & " + to_latex(terms.psi[k].coefficient) + " = 0" +
+                    (c.kind == Constraint::Kind::velocity ? " \\quad\\text{(velocity)}" : "") +
+                    " \\label{eq:" + c.name + "}");
+  }
+  out << "\\begin{align}\n";
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    out << lines[k] << (k + 1 < lines.size() ? " \\\\\n" : "\n");
+  }
+  out << "\\end{align}\n";
+}
+
+}  // namespace
+
+void write_textbook_lagrange(std::ostream& out, const System& system, const EquationsOfMotion& eq,
+                             EquationFormat format, bool intermediates) {
+  const bool latex = format == EquationFormat::latex;
+  // every grouped term: U, the constraints and their forces, then M (with those free of M)
+  LagrangeTerms terms;
+  constraint_terms(system, eq, terms);
+  short_mass_matrix(eq, terms);
+  end_phase("print: mass matrix, U, constraint terms");
+  // T and −f_i by the covariant form (4.30), their coefficients in the book's form
+  kinetic_terms(system, eq, terms);
+  simplify_coefficients(system, terms);
+  if (intermediates) name_intermediates(terms);
+  // the heading, then the equations
   const bool constrained = !system.constraints.empty();
   out << (latex ? "% " : "") << system.name << ": Lagrange's equations"
       << (constrained ? ", the constraint forces sum_k lambda_k a_k on the right" : "")
       << (intermediates ? ", with intermediate quantities z" : "") << "\n";
-  // the lines of align, each labelled (eq:<coordinate> or eq:<constraint>)
-  std::vector<std::string> lines;
-  for (std::size_t k = 0; k < z.names.size(); ++k) {
-    if (latex) {
-      lines.push_back("  & " + to_latex(z.names[k]) + " = " + to_latex(z.values[k]) +
-                      " \\nonumber");
-    } else {
-      out << "  " << z.names[k] << " = " << to_text(z.values[k]) << "\n";
-    }
-  }
   if (latex) {
-    lines.push_back(latex_equation("T = ", texts(T, true), " \\nonumber"));
-    lines.push_back("  & U = " + U_text + " \\nonumber");
+    write_lagrange_latex(out, system, terms);
   } else {
-    out << "  T = " << join_terms(texts(T, false)) << "\n";
-    out << "  U = " << U_text << "\n";
-  }
-  for (std::size_t i = 0; i < q.size(); ++i) {
-    const std::string rhs = join_terms(texts(right[i], latex));
-    if (latex) {
-      lines.push_back(
-          latex_equation("", texts(left[i], true), " = " + rhs + " \\label{eq:" + q[i].name + "}"));
-    } else {
-      out << "  [" << q[i].name << "]  " << join_terms(texts(left[i], false)) << " = " << rhs
-          << "\n";
-    }
-  }
-  for (std::size_t k = 0; k < system.constraints.size(); ++k) {
-    const Constraint& c = system.constraints[k];
-    if (latex) {
-      lines.push_back("  & " + to_latex(psi[k].coefficient) + " = 0" +
-                      (c.kind == Constraint::Kind::velocity ? " \\quad\\text{(velocity)}" : "") +
-                      " \\label{eq:" + c.name + "}");
-    } else {
-      out << "  constraint " << c.name << " (" << constraint_kind_text(c)
-          << "): " << to_text(psi[k].coefficient) << " = 0, multiplier " << to_text(c.multiplier)
-          << "\n";
-    }
-  }
-  if (latex) {
-    out << "\\begin{align}\n";
-    for (std::size_t k = 0; k < lines.size(); ++k) {
-      out << lines[k] << (k + 1 < lines.size() ? " \\\\\n" : "\n");
-    }
-    out << "\\end{align}\n";
+    write_lagrange_text(out, system, terms);
   }
   end_phase("print: written");
 }
