@@ -1,215 +1,72 @@
-// `unidyn sweep`: plan a sweep, run chunks of it, gather the results, write a launcher.
+// The sweep commands on the command line: options in, exit statuses out.
 #include "sweep_command.hpp"
 
-#include <fmt/format.h>
-
-#include <charconv>
-#include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
-#include "unidyn/analysis/operating_point.hpp"
-#include "unidyn/commands/model_source.hpp"
-#include "unidyn/integrate/initial_state.hpp"
-#include "unidyn/io/model_file.hpp"
-#include "unidyn/sweep/manifest.hpp"
-#include "unidyn/sweep/sweep_run.hpp"
-#include "unidyn/symbolic/printable_text.hpp"
+#include "unidyn/model/system.hpp"
 
 namespace unidyn::cli {
-namespace {
-
-namespace fs = std::filesystem;
-
-// A file written whole, or bad input naming it.
-void write_text(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw std::invalid_argument("cannot write " + printable(path));
-}
-
-// --rows A:B (either side may be left out: from the first, to the last run).
-std::pair<std::size_t, std::size_t> parse_rows(const std::string& text, std::size_t runs) {
-  const std::size_t colon = text.find(':');
-  const auto bad = [&] {
-    return std::invalid_argument("--rows " + text + ": expected A:B (run indices, B excluded)");
-  };
-  if (colon == std::string::npos) throw bad();
-  const auto index = [&](std::string_view part, std::size_t otherwise) {
-    if (part.empty()) return otherwise;
-    std::size_t value = 0;
-    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
-    if (error != std::errc() || end != part.data() + part.size()) throw bad();
-    return value;
-  };
-  return {index(std::string_view(text).substr(0, colon), 0),
-          index(std::string_view(text).substr(colon + 1), runs)};
-}
-
-// --results, else MANIFEST.runs.
-fs::path results_directory(const SweepCommand& c) {
-  return c.results.empty() ? default_results_directory(c.model) : fs::path(c.results);
-}
-
-int run_plan(const SweepCommand& c) {
-  const commands::LoadedModel model = commands::load_named_model(c.model);
-  std::vector<GridAxis> grid;
-  std::vector<RandomAxis> random;
-  for (const auto& text : c.grid) grid.push_back(parse_grid_axis(text));
-  for (const auto& text : c.random) random.push_back(parse_random_axis(text));
-  if (grid.empty() && random.empty()) {
-    throw std::invalid_argument("a sweep needs --grid NAME=FROM:TO:COUNT or --random NAME=U(A,B)");
-  }
-  SweepManifest manifest =
-      plan_sweep(fs::absolute(model.path).lexically_normal().string(), model.text,
-                 {c.t_end, c.output_step, c.rtol, c.method}, grid, random, c.samples, c.seed);
-  // every name is one a run can set (a parameter, q or der(q)), the options are a run's options,
-  // and the first run's start can be made: checked now rather than on every node
-  std::vector<std::pair<std::string, double>> first;
-  for (std::size_t k = 0; k < manifest.names.size(); ++k) {
-    first.emplace_back(manifest.names[k], manifest.runs.front().values[k]);
-  }
-  initial_state(model.system, first);
-  simulation_options(model.system.simulate, manifest.options);
-  manifest.modes_at = c.modes_at;
-  parse_given_values(model.system, manifest.modes_at);
-  const std::string path =
-      c.output.empty() ? fs::path(model.path).stem().string() + ".sweep.yaml" : c.output;
-  write_text(path, manifest_text(manifest));
-  fmt::print("sweep of {}: {} runs of {} planned in {}\n", model.system.name, manifest.runs.size(),
-             fmt::join(manifest.names, ", "), printable(path));
-  return 0;
-}
-
-int run_chunk(const SweepCommand& c) {
-  if (!c.rows.empty() && c.chunk > 0) throw std::invalid_argument("give --rows or --chunk/--task");
-  // only the task's runs are read and held; the range is checked against the count read
-  constexpr std::size_t all = SIZE_MAX;
-  const std::size_t task_first = c.chunk > 0 && c.task <= all / c.chunk ? c.task * c.chunk : all;
-  const auto [wanted_first, wanted_last] =
-      c.chunk > 0      ? std::pair{task_first, task_first + std::min(c.chunk, all - task_first)}
-      : c.rows.empty() ? std::pair<std::size_t, std::size_t>{0, all}
-                       : parse_rows(c.rows, all);
-  const SweepManifest manifest = read_manifest(c.model, {wanted_first, wanted_last});
-  const auto [first, last] =
-      c.chunk > 0 ? task_rows(manifest.run_count, c.chunk, c.task)
-                  : std::pair{wanted_first, wanted_last == all ? manifest.run_count : wanted_last};
-  const fs::path directory = results_directory(c);
-  const ChunkReport report =
-      run_sweep_rows(manifest, manifest.sha256, first, last, directory, std::cout);
-  fmt::print(
-      "runs {} to {}: {} made ({} of them failed, {} made again over a stale result), {} "
-      "already done, in {}\n",
-      first, last, report.done, report.failed, report.remade, report.skipped,
-      printable(directory.string()));
-  return 0;
-}
-
-int run_gather(const SweepCommand& c) {
-  const SweepManifest manifest = read_manifest(c.model);
-  const fs::path directory = results_directory(c);
-  std::ostringstream table;
-  const GatherReport report = gather_sweep(manifest, manifest.sha256, directory, table);
-  // at most ten run numbers, then "..."
-  const auto some = [](const std::vector<std::size_t>& runs) {
-    const std::vector<std::size_t> shown(
-        runs.begin(), runs.begin() + static_cast<long>(std::min<std::size_t>(runs.size(), 10)));
-    return fmt::format("{}{}", fmt::join(shown, ", "), runs.size() > 10 ? ", ..." : "");
-  };
-  if (!report.stale.empty()) {
-    fmt::print(stderr,
-               "{} of {} results are not this manifest's or not whole (a re-plan, a copy, a cut "
-               "file): {}; no table written. `unidyn sweep run` makes them again\n",
-               report.stale.size(), manifest.runs.size(), some(report.stale));
-    return 1;
-  }
-  if (c.output.empty()) {
-    std::cout << table.str();
-  } else {
-    write_text(c.output, table.str());
-  }
-  if (report.missing.empty()) {
-    fmt::print(stderr, "gathered all {} runs\n", manifest.runs.size());
-    return 0;
-  }
-  fmt::print(stderr, "{} of {} runs have no result yet: {}\n", report.missing.size(),
-             manifest.runs.size(), some(report.missing));
-  return 1;
-}
-
-int run_emit(const SweepCommand& c) {
-  const SweepManifest manifest = read_manifest(c.model, {0, 0});  // the count alone
-  if (c.slurm == c.parallel) throw std::invalid_argument("sweep emit: give --slurm or --parallel");
-  const std::size_t chunk = c.chunk > 0 ? c.chunk : 10;
-  std::error_code error;
-  const fs::path self = fs::read_symlink("/proc/self/exe", error);
-  const std::string command = error ? std::string("unidyn") : self.string();
-  const std::string manifest_path = fs::absolute(c.model).lexically_normal().string();
-  const std::string script =
-      c.slurm ? slurm_script(command, manifest_path, manifest.run_count, chunk)
-              : parallel_script(command, manifest_path, manifest.run_count, chunk);
-  if (c.output.empty()) {
-    std::cout << script;
-  } else {
-    write_text(c.output, script);
-    fs::permissions(c.output, fs::perms::owner_exec | fs::perms::group_exec, fs::perm_options::add);
-  }
-  return 0;
-}
-
-}  // namespace
 
 void add_sweep_command(CLI::App& app, SweepCommand& c) {
+  commands::SweepOptions& o = c.options;
   c.sweep = app.add_subcommand("sweep", "Ensembles of runs: plan, run chunks, gather, launchers");
   c.sweep->require_subcommand(1);
   c.plan =
       c.sweep->add_subcommand("plan", "Write a manifest: one row per run, each with its values");
-  c.plan->add_option("model", c.model, "MODEL file or bundled model name")->required();
-  c.plan->add_option("--grid", c.grid, "NAME=FROM:TO:COUNT: a parameter, q or der(q) on a grid");
-  c.plan->add_option("--random", c.random, "NAME=U(A,B) or NAME=N(MEAN,SD): drawn per run");
-  c.plan->add_option("--samples", c.samples, "random draws per grid point")->capture_default_str();
+  c.plan->add_option("model", o.model, "MODEL file or bundled model name")->required();
+  c.plan->add_option("--grid", o.grid, "NAME=FROM:TO:COUNT: a parameter, q or der(q) on a grid");
+  c.plan->add_option("--random", o.random, "NAME=U(A,B) or NAME=N(MEAN,SD): drawn per run");
+  c.plan->add_option("--samples", o.samples, "random draws per grid point")->capture_default_str();
   // checked as text, before the conversion that would take -1 for 2^64 - 1
-  c.plan->add_option("--seed", c.seed, "the draws' seed")
+  c.plan->add_option("--seed", o.seed, "the draws' seed")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  c.plan->add_option("--modes-at", c.modes_at,
+  c.plan->add_option("--modes-at", o.modes_at,
                      "NAME=VALUE of an operating point (as `unidyn modes --at`): each run also "
                      "gives the stability and eigenvalues there with its parameters");
-  c.plan->add_option("--t-end", c.t_end, "end time of every run")->check(CLI::PositiveNumber);
-  c.plan->add_option("--output-step", c.output_step, "time between rows")
+  c.plan->add_option("--t-end", o.t_end, "end time of every run")->check(CLI::PositiveNumber);
+  c.plan->add_option("--output-step", o.output_step, "time between rows")
       ->check(CLI::PositiveNumber);
-  c.plan->add_option("--method", c.method, integration_method_choices());
-  c.plan->add_option("--rtol", c.rtol, "relative tolerance")->check(CLI::PositiveNumber);
-  c.plan->add_option("-o,--output", c.output, "the manifest (default MODEL.sweep.yaml)");
+  c.plan->add_option("--method", o.method, integration_method_choices());
+  c.plan->add_option("--rtol", o.rtol, "relative tolerance")->check(CLI::PositiveNumber);
+  c.plan->add_option("-o,--output", o.output, "the manifest (default MODEL.sweep.yaml)");
 
   c.run = c.sweep->add_subcommand("run", "Run a chunk of a manifest's runs (done ones skipped)");
-  c.run->add_option("manifest", c.model, "the manifest")->required();
-  c.run->add_option("--rows", c.rows, "A:B: the runs A to B-1 (default all)");
-  c.run->add_option("--chunk", c.chunk, "with --task: runs per task");
-  c.run->add_option("--task", c.task, "with --chunk: the task (Slurm's SLURM_ARRAY_TASK_ID)");
-  c.run->add_option("--results", c.results, "the results' directory (default MANIFEST.runs)");
+  c.run->add_option("manifest", o.model, "the manifest")->required();
+  c.run->add_option("--rows", o.rows, "A:B: the runs A to B-1 (default all)");
+  c.run->add_option("--chunk", o.chunk, "with --task: runs per task");
+  c.run->add_option("--task", o.task, "with --chunk: the task (Slurm's SLURM_ARRAY_TASK_ID)");
+  c.run->add_option("--results", o.results, "the results' directory (default MANIFEST.runs)");
 
   c.gather = c.sweep->add_subcommand("gather", "One table of the results, in the runs' order");
-  c.gather->add_option("manifest", c.model, "the manifest")->required();
-  c.gather->add_option("--results", c.results, "the results' directory (default MANIFEST.runs)");
-  c.gather->add_option("-o,--output", c.output, "the table (default standard output)");
+  c.gather->add_option("manifest", o.model, "the manifest")->required();
+  c.gather->add_option("--results", o.results, "the results' directory (default MANIFEST.runs)");
+  c.gather->add_option("-o,--output", o.output, "the table (default standard output)");
 
   c.emit = c.sweep->add_subcommand("emit", "Write a launcher script for the manifest");
-  c.emit->add_option("manifest", c.model, "the manifest")->required();
-  c.emit->add_flag("--slurm", c.slurm, "a Slurm job array");
-  c.emit->add_flag("--parallel", c.parallel, "GNU parallel");
-  c.emit->add_option("--chunk", c.chunk, "runs per task (default 10)");
-  c.emit->add_option("-o,--output", c.output, "the script (default standard output)");
+  c.emit->add_option("manifest", o.model, "the manifest")->required();
+  c.emit->add_flag("--slurm", o.slurm, "a Slurm job array");
+  c.emit->add_flag("--parallel", o.parallel, "GNU parallel");
+  c.emit->add_option("--chunk", o.chunk, "runs per task (default 10)");
+  c.emit->add_option("-o,--output", o.output, "the script (default standard output)");
 }
 
 int run_sweep_command(const SweepCommand& c) {
-  if (c.plan->parsed()) return run_plan(c);
-  if (c.run->parsed()) return run_chunk(c);
-  if (c.gather->parsed()) return run_gather(c);
-  return run_emit(c);
+  if (c.plan->parsed()) {
+    commands::plan_sweep_file(c.options, std::cout);
+    return 0;
+  }
+  if (c.run->parsed()) {
+    commands::run_sweep_chunk(c.options, std::cout);
+    return 0;
+  }
+  if (c.gather->parsed()) return commands::gather_sweep_table(c.options, std::cout) ? 0 : 1;
+  // the launchers run this very executable
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  commands::emit_sweep_script(c.options, error ? std::string("unidyn") : self.string(), std::cout);
+  return 0;
 }
 
 }  // namespace unidyn::cli
