@@ -65,40 +65,61 @@ void ModelReader::read_bodies(const YAML::Node& node, System& system) {
     const std::string name = new_name(item.first, system, "body");
     const YAML::Node& spec = item.second;
     expect_map(spec, "body '" + name + "'");
-    expect_keys(spec, {"mass", "inertia", "rotation", "center", "visual"}, "body '" + name + "'");
-    if (!spec["mass"] || !spec["inertia"] || !spec["rotation"] || !spec["center"]) {
-      fail(spec, "body '" + name + "' needs mass:, inertia:, rotation: and center:");
+    const bool jointed = static_cast<bool>(spec["joint"]);
+    if (jointed) {
+      expect_keys(spec, {"mass", "inertia", "joint", "center", "visual"}, "body '" + name + "'");
+      if (!spec["mass"]) fail(spec, "body '" + name + "' needs mass:");
+    } else {
+      expect_keys(spec, {"mass", "inertia", "rotation", "center", "visual"}, "body '" + name + "'");
+      if (!spec["mass"] || !spec["inertia"] || !spec["rotation"] || !spec["center"]) {
+        fail(spec, "body '" + name + "' needs mass:, inertia:, rotation: and center:");
+      }
     }
     const SystemScope scope(system);
     const Expr mass = scalar_expr(spec["mass"], scope, "mass");
     expect_state_only(spec["mass"], mass, system, "a mass");
-    expect_positive_mass(spec["mass"], mass, system);
+    // mass: 0 with a joint: a frame of the tree (a URDF link without inertia)
+    if (!(jointed && mass.is_zero())) expect_positive_mass(spec["mass"], mass, system);
     shape_mass_ = mass;
-    Body body{name,
-              mass,
-              inertia(spec["inertia"], system),
-              rotation(spec["rotation"], system),
-              VectorExpr{},
-              at(item.first),
-              euler_chart(spec["rotation"], system),
-              BodyVisual{}};
-    add_unit_norm_constraint(spec["rotation"], name, system);
+    Body body;
+    body.name = name;
+    body.mass = mass;
+    body.inertia = spec["inertia"] ? inertia(spec["inertia"], system) : GiNaC::matrix(3, 3);
+    body.where = at(item.first);
+    if (jointed) {
+      place_by_joint(spec["joint"], body, system);
+    } else {
+      body.rotation = rotation(spec["rotation"], system);
+      body.chart = euler_chart(spec["rotation"], system);
+      add_unit_norm_constraint(spec["rotation"], name, system);
+    }
     // the centre may use the body's own basis (l*top.e3): the body is known before it is read
     system.bodies.push_back(body);
-    const SystemScope with_body(system);
-    const VectorExpr center = vector_expr(spec["center"], with_body, "center");
-    expect_state_only(spec["center"], center, system, "a centre of mass");
-    system.bodies.back().center = center;
-    expect_realisable_inertia(spec["inertia"], system.bodies.back().inertia, system);
-    system.bodies.back().visual = spec["visual"] ? visual(spec["visual"], system)
-                                                 : visual_of_inertia(spec["inertia"], system);
+    Body& added = system.bodies.back();
+    if (spec["center"]) {
+      const SystemScope with_body(system);
+      added.center = vector_expr(spec["center"], with_body, "center");
+      expect_state_only(spec["center"], added.center, system, "a centre of mass");
+    } else {
+      added.center = added.origin;
+    }
+    if (!jointed) added.origin = added.center;
+    if (spec["inertia"]) expect_realisable_inertia(spec["inertia"], added.inertia, system);
+    added.visual = spec["visual"]    ? visual(spec["visual"], system)
+                   : spec["inertia"] ? visual_of_inertia(spec["inertia"], system)
+                                     : BodyVisual{};
   }
   // each body's ω (all at once: their simplification shared among processes), then whether a
-  // body turns about an axis along which it has no inertia
+  // body turns about an axis along which it has no inertia (a frame has none at all)
   system.make_angular_velocities();
   std::size_t b = 0;
-  for (const auto& item : node)
-    expect_inertia_about_rotation_axes(item.second["rotation"], b++, system);
+  for (const auto& item : node) {
+    const YAML::Node& spec = item.second;
+    if (!system.bodies[b].mass.is_zero())
+      expect_inertia_about_rotation_axes(spec["joint"] ? spec["joint"] : spec["rotation"], b,
+                                         system);
+    ++b;
+  }
 }
 
 // A shape with its dimensions, {disk: {radius: R}}, as the inertia's shapes are written.
@@ -275,12 +296,21 @@ void ModelReader::add_unit_norm_constraint(const YAML::Node& node, const std::st
     return;
   }
   if (!node.IsMap() || !node["quaternion"]) return;
-  Expr norm_squared = 0;
+  std::vector<std::size_t> parameters;
   for (std::size_t i = 0; i < 4; ++i) {
     const auto q = system.find_coordinate(node["quaternion"][i].Scalar());
     if (!q) return;  // the parameters are expressions: their norm is the model's business
-    norm_squared += GiNaC::pow(system.coordinates()[*q].value, 2);
+    parameters.push_back(*q);
   }
+  add_unit_norm_constraint(parameters, body, at(node), system);
+}
+
+void ModelReader::add_unit_norm_constraint(const std::vector<std::size_t>& parameters,
+                                           const std::string& body, const SourcePosition& where,
+                                           System& system) {
+  Expr norm_squared = 0;
+  for (const std::size_t q : parameters)
+    norm_squared += GiNaC::pow(system.coordinates()[q].value, 2);
   std::string name = body + "_unit";
   for (int k = 2; std::any_of(system.constraints.begin(), system.constraints.end(),
                               [&](const Constraint& c) { return c.name == name; });
@@ -294,7 +324,7 @@ void ModelReader::add_unit_norm_constraint(const YAML::Node& node, const std::st
        GiNaC::realsymbol("lambda(" + name + ")", "\\lambda_{\\mathrm{" + name + "}}"),
        false,
        std::nullopt,
-       at(node),
+       where,
        name,
        {},
        true,

@@ -246,6 +246,15 @@ class ModelReader {
   TensorExpr rotation(const YAML::Node& node, const System& system);
   std::optional<EulerChart> euler_chart(const YAML::Node& node, const System& system);
   void add_unit_norm_constraint(const YAML::Node& node, const std::string& body, System& system);
+  void add_unit_norm_constraint(const std::vector<std::size_t>& parameters, const std::string& body,
+                                const SourcePosition& where, System& system);
+  // A body placed by `joint:` on its parent (model_tree_joints.cpp).
+  void place_by_joint(const YAML::Node& node, Body& body, System& system);
+  TreeJoint tree_joint(const YAML::Node& node, const System& system);
+  std::vector<std::size_t> joint_coordinates(const YAML::Node& node, TreeJoint::Kind kind,
+                                             const System& system);
+  VectorExpr joint_axis(const YAML::Node& node, TreeJoint::Kind kind, const System& system);
+  VectorExpr constant_vector(const YAML::Node& node, const System& system, const std::string& what);
   GiNaC::matrix inertia(const YAML::Node& node, const System& system);
   BodyVisual visual(const YAML::Node& node, const System& system);
   BodyVisual visual_of_inertia(const YAML::Node& node, const System& system);

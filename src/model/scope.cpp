@@ -46,6 +46,7 @@ std::optional<Value> SystemScope::body_member(std::size_t b, const std::string& 
     return Value::of(system_.body_basis_vector(b, member[1] - '0'));
   }
   if (member == "center") return Value::of(body.center);
+  if (member == "origin") return Value::of(body.origin);
   if (member == "velocity") return Value::of(system_.center_velocity(b));
   if (member == "omega") return Value::of(system_.angular_velocity(b));
   if (member == "H") return Value::of(system_.angular_momentum(b));
@@ -60,13 +61,17 @@ std::optional<Value> SystemScope::body_member(std::size_t b, const std::string& 
 
 std::optional<Value> SystemScope::call(std::string_view name,
                                        const std::vector<Value>& args) const {
-  // body.point([X1, X2, X3]): the material point x̄ + Q X
+  // body.point([X1, X2, X3]): the material point x̄ + Q X; body.frame_point(X): o + Q X
   const std::string key(name);
   const std::size_t dot = key.find('.');
-  if (dot == std::string::npos || key.substr(dot + 1) != "point") return std::nullopt;
+  if (dot == std::string::npos) return std::nullopt;
+  const std::string member = key.substr(dot + 1);
+  if (member != "point" && member != "frame_point") return std::nullopt;
   const auto b = system_.find_body(key.substr(0, dot));
   if (!b || args.size() != 1 || !args[0].is_vector()) return std::nullopt;
-  return Value::of(system_.material_point(*b, args[0].vector));
+  if (member == "point") return Value::of(system_.material_point(*b, args[0].vector));
+  const Body& body = system_.bodies[*b];
+  return Value::of(body.origin + times(body.rotation, args[0].vector));
 }
 
 std::optional<Expr> SystemScope::rate(std::string_view name) const {
@@ -84,8 +89,8 @@ std::vector<std::string> SystemScope::names() const {
   for (const auto& d : system_.definitions) all.push_back(d.name);
   for (const auto& c : system_.constraints) all.push_back(c.name + ".lambda");
   for (const auto& b : system_.bodies) {
-    for (const char* member : {".e1", ".e2", ".e3", ".center", ".velocity", ".omega", ".H", ".mass",
-                               ".angular_momentum"}) {
+    for (const char* member : {".e1", ".e2", ".e3", ".center", ".origin", ".velocity", ".omega",
+                               ".H", ".mass", ".angular_momentum"}) {
       all.push_back(b.name + member);
     }
   }

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "unidyn/model/tree_joint.hpp"
 #include "unidyn/symbolic/coordinates.hpp"
 #include "unidyn/symbolic/expression.hpp"
 #include "unidyn/symbolic/rotation_expr.hpp"
@@ -63,6 +64,10 @@ struct Body {
   SourcePosition where;
   std::optional<EulerChart> chart;
   BodyVisual visual;
+  // Its frame's origin o (B.origin): where its joint places it, else its centre of mass.
+  VectorExpr origin;
+  // The joint that places it on its parent (a kinematic tree, tree_joint.hpp), if any.
+  std::optional<TreeJoint> joint;
 };
 
 // A force F acting on a particle (the vector Newton's law sees).
