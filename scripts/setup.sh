@@ -16,7 +16,7 @@ run=(
   build-essential cmake ninja-build pkg-config
   # libraries (DESIGN.md "Dependencies")
   libeigen3-dev libginac-dev libcln-dev libsundials-dev libyaml-cpp-dev
-  libcli11-dev libfmt-dev libssl-dev
+  libcli11-dev libfmt-dev libssl-dev libtinyxml2-dev
 )
 # tests and micro benchmarks, the peers of bench/ (compiled with them), pdflatex for the LaTeX
 # documents `derive --standalone` writes, and SymPy to read the JSON `derive` writes

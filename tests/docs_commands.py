@@ -4,8 +4,9 @@ every subcommand and option the command line has, so the docs cannot rot.
 
 (a) Every line starting with `unidyn ` in a fenced ```sh block of README.md and docs/*.md is run
     with the built executable (no shell: split as the shell would, a `\\` at a line's end joining
-    the next), each block in a fresh temporary directory of its own, in order; it must exit 0, or
-    the status its comment names (`# exit 2: why`).
+    the next), each block in a fresh temporary directory of its own (with the repository's
+    examples/ linked into it), in order; it must exit 0, or the status its comment names
+    (`# exit 2: why`).
 (b) `unidyn --help` and each subcommand's `--help`, nested ones too (`sweep plan`), give every
     subcommand and option; each must appear in docs/commands.md: a subcommand in a heading
     `unidyn <path>`, its options (`--xyz`) in that heading's section.
@@ -71,6 +72,8 @@ def run_shown_commands(root, unidyn):
             if not shown:
                 continue
             with tempfile.TemporaryDirectory(prefix="unidyn-docs-") as directory:
+                # the repository's examples/ (`unidyn import examples/urdf/...`) as a reader has them
+                os.symlink(root / "examples", pathlib.Path(directory) / "examples")
                 for number, text in shown:
                     mark = EXIT_MARK.search(text)
                     expected = int(mark.group(1)) if mark else 0

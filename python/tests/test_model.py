@@ -3,6 +3,7 @@ equations derived independently here, and as an array API (shapes, errors, threa
 
 import io
 import math
+import os
 import threading
 import time
 
@@ -46,6 +47,22 @@ def test_load_a_bundled_model_a_file_and_a_text(tmp_path):
     assert unidyn.load(path).parameters["l1"] == 1.5
     assert unidyn.load(DOUBLE_PENDULUM).name == "two rods"
     assert unidyn.load("rolling-disk").constraints == ["height", "pi1", "pi2"]
+
+
+def test_load_a_urdf_file(tmp_path):
+    """A URDF file is imported (`unidyn import`) and loaded as the model it becomes; a file it
+    refuses is a ModelError at the file's line and column."""
+    examples = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "urdf")
+    arm = unidyn.load(os.path.join(examples, "three-link-arm.urdf"))
+    assert arm.name == "three_link_arm"
+    assert arm.coordinates == ["shoulder", "elbow", "wrist"]
+    bad = tmp_path / "bad.urdf"
+    bad.write_text('<robot name="r">\n  <link name="a"><inertial><mass value="-1"/>'
+                   '</inertial></link>\n</robot>\n')
+    with pytest.raises(unidyn.ModelError) as error:
+        unidyn.load(str(bad))
+    assert (error.value.line, error.value.column) == (2, 41)
+    assert "a mass must be positive" in str(error.value)
 
 
 def test_model_errors_carry_file_line_and_column(tmp_path):

@@ -12,6 +12,7 @@
 
 #include "analysis_commands.hpp"
 #include "fixed_layout.hpp"
+#include "import_command.hpp"
 #include "model_commands.hpp"
 #include "progress_notices.hpp"
 #include "rotation_command.hpp"
@@ -49,6 +50,8 @@ int main(int argc, char** argv) {
   unidyn::cli::add_analysis_commands(app, analysis);
   unidyn::cli::SweepCommand sweep;
   unidyn::cli::add_sweep_command(app, sweep);
+  unidyn::cli::ImportCommand import;
+  unidyn::cli::add_import_command(app, import);
 
   try {
     app.parse(argc, argv);
@@ -76,6 +79,7 @@ int main(int argc, char** argv) {
       const unidyn::cli::ProgressNotices notices;
       status = rotation.rotation->parsed() ? unidyn::cli::run_rotation_command(rotation)
                : sweep.sweep->parsed()     ? unidyn::cli::run_sweep_command(sweep)
+               : import.import->parsed()   ? unidyn::cli::run_import_command(import)
                : analysis.linearize->parsed() || analysis.modes->parsed() ||
                        analysis.equilibria->parsed()
                    ? unidyn::cli::run_analysis_commands(analysis)

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "unidyn/formats/urdf.hpp"
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/io/phase_timings.hpp"
 
@@ -95,10 +96,16 @@ std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::st
   return overrides;
 }
 
+bool is_urdf(const std::string& path) {
+  return fs::path(path).extension() == ".urdf";
+}
+
+// A URDF file is imported: the model is the YAML it becomes (`unidyn import` prints it).
 LoadedModel load_named_model(const std::string& argument) {
   const std::string path = resolve_model(argument);
-  std::string text = read_model_text(path);
-  System system = parse_model(text, path);
+  const bool urdf = is_urdf(path);
+  std::string text = urdf ? formats::import_urdf_file(path).yaml : read_model_text(path);
+  System system = parse_model(text, urdf ? path + " (imported)" : path);
   end_phase("read model");
   return {std::move(system), std::move(text), path};
 }

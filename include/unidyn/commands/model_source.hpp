@@ -24,7 +24,11 @@ std::string resolve_model(const std::string& argument);
 // --set NAME=NUMBER texts; anything else is bad input (std::invalid_argument).
 std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::string>& sets);
 
-// The model a command names (a file, or a bundled model by name), read once, and its text.
+// Whether a model file is a URDF file (named *.urdf), which is imported.
+bool is_urdf(const std::string& path);
+
+// The model a command names (a file, or a bundled model by name), read once, and its text (a URDF
+// file's: the YAML it is imported as, read as "PATH (imported)").
 struct LoadedModel {
   System system;
   std::string text;

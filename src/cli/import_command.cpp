@@ -1,0 +1,22 @@
+// `unidyn import` on the command line.
+#include "import_command.hpp"
+
+#include <iostream>
+
+#include "unidyn/commands/import_command.hpp"
+
+namespace unidyn::cli {
+
+void add_import_command(CLI::App& app, ImportCommand& c) {
+  c.import = app.add_subcommand(
+      "import", "Write a URDF robot as a unidyn model (YAML) to read and edit; notes on stderr");
+  c.import->add_option("file", c.file, "URDF file (*.urdf)")->required();
+  c.import->add_option("-o,--output", c.output, "YAML file (default: standard output)");
+}
+
+int run_import_command(const ImportCommand& c) {
+  commands::write_import(c.file, c.output, std::cout, std::cerr);
+  return 0;
+}
+
+}  // namespace unidyn::cli

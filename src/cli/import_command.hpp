@@ -1,0 +1,20 @@
+// `unidyn import FILE [-o OUT]`: its command-line options and exit status.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace unidyn::cli {
+
+struct ImportCommand {
+  CLI::App* import = nullptr;
+  std::string file;    // the URDF file
+  std::string output;  // -o: the YAML file (default: standard output)
+};
+
+void add_import_command(CLI::App& app, ImportCommand& command);
+
+// 0 once written (a file refused throws ModelError: exit 2).
+int run_import_command(const ImportCommand& command);
+
+}  // namespace unidyn::cli
