@@ -14,7 +14,8 @@ const std::vector<std::pair<std::string, TreeJoint::Kind>>& joint_motions() {
       {"revolute", TreeJoint::Kind::revolute},
       {"prismatic", TreeJoint::Kind::prismatic},
       {"floating", TreeJoint::Kind::floating},
-      {"planar", TreeJoint::Kind::planar}};
+      {"planar", TreeJoint::Kind::planar},
+      {"ball", TreeJoint::Kind::ball}};
   return motions;
 }
 
@@ -41,9 +42,9 @@ void ModelReader::place_by_joint(const YAML::Node& node, Body& body, System& sys
   body.rotation = frame.rotation;
   body.origin = frame.origin;
   body.joint = joint;
-  // a floating joint's Euler parameters keep e0² + e · e = 1, as a quaternion rotation's do
-  if (joint.kind == TreeJoint::Kind::floating) {
-    const std::vector<std::size_t> e(joint.coordinates.begin() + 3, joint.coordinates.end());
+  // a floating or ball joint's Euler parameters keep e0² + e · e = 1, as a quaternion rotation's do
+  if (joint.kind == TreeJoint::Kind::floating || joint.kind == TreeJoint::Kind::ball) {
+    const std::vector<std::size_t> e(joint.coordinates.end() - 4, joint.coordinates.end());
     add_unit_norm_constraint(e, body.name, at(node), system);
   }
 }
@@ -53,7 +54,7 @@ TreeJoint ModelReader::tree_joint(const YAML::Node& node, const System& system) 
   expect_map(node, "joint");
   expect_keys(node,
               {"parent", "origin", "rpy", "rotation", "revolute", "prismatic", "floating", "planar",
-               "axis"},
+               "ball", "axis"},
               "a joint");
   TreeJoint joint;
   if (node["parent"]) {
@@ -82,7 +83,10 @@ TreeJoint ModelReader::tree_joint(const YAML::Node& node, const System& system) 
     joint.kind = kind;
     joint.coordinates = joint_coordinates(node[key], kind, system);
   }
-  if (node["axis"] && joint.kind == TreeJoint::Kind::fixed) {
+  const bool has_axis = joint.kind == TreeJoint::Kind::revolute ||
+                        joint.kind == TreeJoint::Kind::prismatic ||
+                        joint.kind == TreeJoint::Kind::planar;
+  if (node["axis"] && !has_axis) {
     fail(node["axis"], "axis: is for a revolute, prismatic or planar joint");
   }
   joint.axis = joint_axis(node, joint.kind, system);
@@ -90,7 +94,7 @@ TreeJoint ModelReader::tree_joint(const YAML::Node& node, const System& system) 
 }
 
 // The coordinates a motion names: one (revolute, prismatic), [x, y, z, e0, e1, e2, e3] (floating)
-// or [x, y, theta] (planar); each moves one joint.
+// or [x, y, theta] (planar) or [e0, e1, e2, e3] (ball); each moves one joint.
 std::vector<std::size_t> ModelReader::joint_coordinates(const YAML::Node& node,
                                                         TreeJoint::Kind kind,
                                                         const System& system) {
@@ -102,7 +106,8 @@ std::vector<std::size_t> ModelReader::joint_coordinates(const YAML::Node& node,
     if (!node.IsSequence() || node.size() != count) {
       fail(node, kind == TreeJoint::Kind::floating
                      ? "floating: takes seven coordinates [x, y, z, e0, e1, e2, e3]"
-                     : "planar: takes three coordinates [x, y, theta]");
+                 : kind == TreeJoint::Kind::ball ? "ball: takes four coordinates [e0, e1, e2, e3]"
+                                                 : "planar: takes three coordinates [x, y, theta]");
     }
     for (const auto& n : node) names.push_back(n);
   }

@@ -12,6 +12,8 @@ std::size_t joint_coordinate_count(TreeJoint::Kind kind) {
       return 1;
     case TreeJoint::Kind::planar:
       return 3;
+    case TreeJoint::Kind::ball:
+      return 4;
     case TreeJoint::Kind::floating:
       return 7;
   }
@@ -39,6 +41,10 @@ FrameExpr joint_motion(const TreeJoint& joint, const std::vector<CoordinateSymbo
     case TreeJoint::Kind::floating:
       motion.origin = VectorExpr(q[0], q[1], q[2]);
       motion.rotation = euler_parameter_rotation_expr(q[3], VectorExpr(q[4], q[5], q[6]));
+      break;
+    // (6.36) a ball joint: the Euler parameters' rotation about the joint frame's origin
+    case TreeJoint::Kind::ball:
+      motion.rotation = euler_parameter_rotation_expr(q[0], VectorExpr(q[1], q[2], q[3]));
       break;
     // a = ±E_k: slide along E_k+1 and E_k+2, turn about a
     case TreeJoint::Kind::planar: {

@@ -181,10 +181,10 @@ TEST(TreeJoints, EnergiesAgreeWithTheArmWrittenByHand) {
 
 // A floating joint: seven coordinates, the origin on the joint frame and Euler parameters (6.36),
 // with the constraint NAME_unit; a planar joint slides along the next two axes and turns about its
-// own.
+// own; a ball joint turns by four Euler parameters about the joint frame's origin.
 TEST(TreeJoints, FloatingAndPlanarJoints) {
   const System system = parse_model(R"(unidyn: 1
-coordinates: [x, y, z, e0, e1, e2, e3, u, v, th]
+coordinates: [x, y, z, e0, e1, e2, e3, u, v, th, f0, f1, f2, f3]
 bodies:
   hull:
     joint: {origin: [1, 0, 0], rpy: [0, 0, 0.3], floating: [x, y, z, e0, e1, e2, e3]}
@@ -192,6 +192,10 @@ bodies:
     inertia: [1, 2, 3]
   cart:
     joint: {parent: hull, planar: [u, v, th], axis: [0, -1, 0]}
+    mass: 1
+    inertia: [1, 1, 1]
+  bob:
+    joint: {parent: cart, origin: [0, 0, 1], ball: [f0, f1, f2, f3]}
     mass: 1
     inertia: [1, 1, 1]
 )",
@@ -207,7 +211,11 @@ bodies:
                                          {"e3", e3},
                                          {"u", 0.7},
                                          {"v", -0.2},
-                                         {"th", 0.9}});
+                                         {"th", 0.9},
+                                         {"f0", e3},
+                                         {"f1", -e2},
+                                         {"f2", e1},
+                                         {"f3", e0}});
   // (6.36) typed out for the unit (e0, e)
   Matrix3 E;
   E << e0 * e0 + e1 * e1 - e2 * e2 - e3 * e3, 2 * (e1 * e2 - e0 * e3), 2 * (e1 * e3 + e0 * e2),
@@ -222,6 +230,16 @@ bodies:
   const Vector3 oc = o + Q * Vector3(-0.2, 0, 0.7);
   EXPECT_LT((origin_at(system, "cart", at) - oc).norm(), 1e-14);
   EXPECT_LT((rotation_at(system, "cart", at) - Q * Ry(-0.9)).norm(), 1e-14);
+  // a ball joint turns by its Euler parameters about the joint frame's origin
+  Matrix3 F;
+  const double f0 = e3, f1 = -e2, f2 = e1, f3 = e0;
+  F << f0 * f0 + f1 * f1 - f2 * f2 - f3 * f3, 2 * (f1 * f2 - f0 * f3), 2 * (f1 * f3 + f0 * f2),
+      2 * (f1 * f2 + f0 * f3), f0 * f0 - f1 * f1 + f2 * f2 - f3 * f3, 2 * (f2 * f3 - f0 * f1),
+      2 * (f1 * f3 - f0 * f2), 2 * (f2 * f3 + f0 * f1), f0 * f0 - f1 * f1 - f2 * f2 + f3 * f3;
+  const Matrix3 Qc = Q * Ry(-0.9);
+  EXPECT_LT((origin_at(system, "bob", at) - (oc + Qc * Vector3(0, 0, 1))).norm(), 1e-14);
+  EXPECT_LT((rotation_at(system, "bob", at) - Qc * F).norm(), 1e-14);
+  EXPECT_TRUE(system.find_constraint("bob_unit"));
 }
 
 // Each mistake in a joint is refused where it is, saying what was expected.
