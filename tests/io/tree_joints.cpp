@@ -195,7 +195,7 @@ bodies:
     mass: 1
     inertia: [1, 1, 1]
   bob:
-    joint: {parent: cart, origin: [0, 0, 1], ball: [f0, f1, f2, f3]}
+    joint: {origin: [0, 0, 1], rpy: [0, 0.2, 0], ball: [f0, f1, f2, f3]}
     mass: 1
     inertia: [1, 1, 1]
 )",
@@ -236,9 +236,8 @@ bodies:
   F << f0 * f0 + f1 * f1 - f2 * f2 - f3 * f3, 2 * (f1 * f2 - f0 * f3), 2 * (f1 * f3 + f0 * f2),
       2 * (f1 * f2 + f0 * f3), f0 * f0 - f1 * f1 + f2 * f2 - f3 * f3, 2 * (f2 * f3 - f0 * f1),
       2 * (f1 * f3 - f0 * f2), 2 * (f2 * f3 + f0 * f1), f0 * f0 - f1 * f1 - f2 * f2 + f3 * f3;
-  const Matrix3 Qc = Q * Ry(-0.9);
-  EXPECT_LT((origin_at(system, "bob", at) - (oc + Qc * Vector3(0, 0, 1))).norm(), 1e-14);
-  EXPECT_LT((rotation_at(system, "bob", at) - Qc * F).norm(), 1e-14);
+  EXPECT_LT((origin_at(system, "bob", at) - Vector3(0, 0, 1)).norm(), 1e-14);
+  EXPECT_LT((rotation_at(system, "bob", at) - Ry(0.2) * F).norm(), 1e-14);
   EXPECT_TRUE(system.find_constraint("bob_unit"));
 }
 
