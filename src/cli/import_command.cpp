@@ -9,8 +9,10 @@ namespace unidyn::cli {
 
 void add_import_command(CLI::App& app, ImportCommand& c) {
   c.import = app.add_subcommand(
-      "import", "Write a URDF robot as a unidyn model (YAML) to read and edit; notes on stderr");
-  c.import->add_option("file", c.file, "URDF file (*.urdf)")->required();
+      "import",
+      "Write a URDF or MJCF robot as a unidyn model (YAML) to read and edit; notes on stderr");
+  c.import->add_option("file", c.file, "URDF file (*.urdf) or MJCF file (*.xml, root <mujoco>)")
+      ->required();
   c.import->add_option("-o,--output", c.output, "YAML file (default: standard output)");
 }
 

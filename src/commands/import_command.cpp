@@ -1,9 +1,10 @@
-// `unidyn import`: a URDF file as the model language's YAML.
+// `unidyn import`: a URDF or MJCF file as the model language's YAML.
 #include "unidyn/commands/import_command.hpp"
 
 #include <stdexcept>
 
 #include "unidyn/commands/model_source.hpp"
+#include "unidyn/formats/mjcf.hpp"
 #include "unidyn/formats/urdf.hpp"
 #include "unidyn/io/atomic_file.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
@@ -12,11 +13,15 @@ namespace unidyn::commands {
 
 void write_import(const std::string& file, const std::string& output, std::ostream& out,
                   std::ostream& notes) {
-  if (!is_urdf(file)) {
-    throw std::invalid_argument("'" + file + "': unidyn imports URDF files (*.urdf)");
+  const bool mjcf = formats::is_mjcf_file(file);
+  if (!is_urdf(file) && !mjcf) {
+    throw std::invalid_argument("'" + file +
+                                "': unidyn imports URDF files (*.urdf) and MJCF files (*.xml "
+                                "whose root element is <mujoco>)");
   }
   if (!output.empty()) expect_writable(output);
-  const formats::ImportedModel model = formats::import_urdf_file(file);
+  const formats::ImportedModel model =
+      mjcf ? formats::import_mjcf_file(file) : formats::import_urdf_file(file);
   for (const auto& note : model.notes) notes << printable(note) << '\n';
   if (output.empty()) {
     out << model.yaml;

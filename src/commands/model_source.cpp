@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "unidyn/formats/mjcf.hpp"
 #include "unidyn/formats/urdf.hpp"
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/io/phase_timings.hpp"
@@ -100,12 +101,16 @@ bool is_urdf(const std::string& path) {
   return fs::path(path).extension() == ".urdf";
 }
 
-// A URDF file is imported: the model is the YAML it becomes (`unidyn import` prints it).
+// A URDF file, or an MJCF file (.xml with the root <mujoco>), is imported: the model is the YAML
+// it becomes (`unidyn import` prints it).
 LoadedModel load_named_model(const std::string& argument) {
   const std::string path = resolve_model(argument);
   const bool urdf = is_urdf(path);
-  std::string text = urdf ? formats::import_urdf_file(path).yaml : read_model_text(path);
-  System system = parse_model(text, urdf ? path + " (imported)" : path);
+  const bool mjcf = !urdf && formats::is_mjcf_file(path);
+  std::string text = urdf   ? formats::import_urdf_file(path).yaml
+                     : mjcf ? formats::import_mjcf_file(path).yaml
+                            : read_model_text(path);
+  System system = parse_model(text, urdf || mjcf ? path + " (imported)" : path);
   end_phase("read model");
   return {std::move(system), std::move(text), path};
 }

@@ -1,8 +1,6 @@
 // A URDF file as a unidyn model: the YAML text of its bodies placed by tree joints.
 #include "unidyn/formats/urdf.hpp"
 
-#include <fstream>
-
 #include "unidyn/symbolic/printable_text.hpp"
 #include "urdf_joint.hpp"
 #include "urdf_parts.hpp"
@@ -12,16 +10,6 @@ namespace unidyn::formats {
 namespace {
 
 using tinyxml2::XMLElement;
-
-// A YAML double-quoted string of printable text.
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : printable(text)) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
 
 // The materials by name (the colours a <visual> may name): <robot>'s, then those a <visual>
 // defines with a colour, first definition first (as URDF readers resolve them). <robot>'s are
@@ -47,14 +35,6 @@ std::map<std::string, const XMLElement*> named_materials(const XmlSource& source
   return materials;
 }
 
-// What is written: the bodies' lines, the coordinates, the dampers, the initial values.
-struct Written {
-  std::vector<std::string> bodies;
-  std::vector<std::string> coordinates;
-  std::vector<std::string> dampers;
-  std::vector<std::string> initial;
-};
-
 // A link's body: its unidyn name (a comment when it changed), its joint, its inertia and visual.
 void write_body(const LinkContext& context, const UrdfTree& tree, std::size_t link,
                 std::vector<std::string>& body_names, Names& names, Written& written) {
@@ -77,28 +57,6 @@ void write_body(const LinkContext& context, const UrdfTree& tree, std::size_t li
   for (auto& line : link_body_lines(context, *l.element, body_names[link])) {
     written.bodies.push_back(std::move(line));
   }
-}
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string text;
-  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
-  return text;
-}
-
-// The model's YAML: header, parameters, coordinates, bodies, forces, initial state, run.
-std::string model_yaml(const std::string& robot, const std::string& file, const Written& w) {
-  std::string yaml =
-      "# Written by `unidyn import` from a URDF file; docs/formats.md says what maps to what.\n";
-  yaml += "unidyn: 1\nname: " + quoted(robot) + "\n";
-  yaml += "description: " + quoted("Imported by unidyn from " + file + " (URDF)") + "\n";
-  yaml += "parameters: {g: 9.81}\n";
-  yaml += "coordinates: [" + joined(w.coordinates) + "]\n\nbodies:\n";
-  for (const auto& line : w.bodies) yaml += line + "\n";
-  yaml += "\nforces:\n  - gravity: -g*E3\n";
-  for (const auto& line : w.dampers) yaml += line + "\n";
-  yaml += "\ninitial: {" + joined(w.initial) + "}\n";
-  yaml += "simulate: {t_end: 5, output_step: 0.01}\n";
-  return yaml;
 }
 
 }  // namespace
@@ -126,22 +84,13 @@ ImportedModel import_urdf(const std::string& text, const std::string& file) {
   Written written;
   std::vector<std::string> body_names(tree.links.size());
   for (std::size_t link : tree.order) write_body(context, tree, link, body_names, names, written);
-  model.yaml = model_yaml(name, file, written);
+  model.yaml = model_yaml({name, file, "URDF", "{g: 9.81}", "  - gravity: -g*E3"}, written);
   for (auto& note : ignored.notes()) model.notes.push_back(std::move(note));
   return model;
 }
 
-// The file in blocks, refused once past the bound (/dev/zero, a log file named by mistake).
 ImportedModel import_urdf_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ModelError({path, 0, 0}, "cannot open the URDF file");
-  std::string text;
-  std::vector<char> block(1 << 16);
-  for (std::streamsize got; (got = in.rdbuf()->sgetn(block.data(), 1 << 16)) > 0;) {
-    text.append(block.data(), static_cast<std::size_t>(got));
-    if (text.size() > kMaxUrdfBytes) break;
-  }
-  return import_urdf(text, path);
+  return import_urdf(read_bounded_file(path, kMaxUrdfBytes, "URDF file"), path);
 }
 
 }  // namespace unidyn::formats

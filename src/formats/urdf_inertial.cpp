@@ -12,13 +12,6 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-// The number with 17 significant digits (it reads back as the same double).
-std::string exact_text(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", x);
-  return buffer;
-}
-
 // URDF's rpy: R = Rz(y) Ry(p) Rx(r), about the fixed axes x, y, z in turn.
 Eigen::Matrix3d rpy_rotation(const std::vector<Number>& rpy) {
   return (Eigen::AngleAxisd(rpy[2].value, Eigen::Vector3d::UnitZ()) *
@@ -37,35 +30,6 @@ std::vector<std::vector<Number>> inertia_components(const XmlSource& source,
   const Number xx = at("ixx"), xy = at("ixy"), xz = at("ixz"), yy = at("iyy"), yz = at("iyz"),
                zz = at("izz");
   return {{xx, xy, xz}, {xy, yy, yz}, {xz, yz, zz}};
-}
-
-// A tensor a body can have (as the model reader checks it): positive semi-definite and each
-// principal moment at most the sum of the other two (7.18′); else refused at <inertia>.
-void expect_realisable(const XmlSource& source, const XMLElement& inertia,
-                       const Eigen::Matrix3d& J) {
-  const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(J).eigenvalues();
-  const double tolerance = 1e-12 * std::max(1.0, moments.cwiseAbs().maxCoeff());
-  const std::string text = "the principal moments are " + exact_text(moments[0]) + ", " +
-                           exact_text(moments[1]) + ", " + exact_text(moments[2]);
-  if (moments.minCoeff() < -tolerance) {
-    source.refuse(inertia, "an inertia tensor must be positive semi-definite: " + text);
-  }
-  for (int i = 0; i < 3; ++i) {
-    if (moments[i] > moments[(i + 1) % 3] + moments[(i + 2) % 3] + tolerance) {
-      source.refuse(inertia,
-                    "no body has this inertia: a principal moment exceeds the sum of the other "
-                    "two (" +
-                        text + ")");
-    }
-  }
-}
-
-std::string tensor_line(const std::vector<std::vector<std::string>>& rows) {
-  std::string text = "    inertia: {tensor: [";
-  for (std::size_t i = 0; i < 3; ++i) {
-    text += (i ? "], [" : "[") + rows[i][0] + ", " + rows[i][1] + ", " + rows[i][2];
-  }
-  return text + "]]}";
 }
 
 // inertia: the tensor as typed, or turned onto the link frame (R J Rᵀ) when <inertial>'s origin
@@ -99,7 +63,7 @@ void write_inertia(const LinkContext& context, const XMLElement& inertial,
     context.notes.push_back(source.position(*origin, "rpy").str() + ": " + why);
     lines.push_back("    # " + why);
   }
-  lines.push_back(tensor_line(rows));
+  lines.push_back("    inertia: " + tensor_text(rows));
 }
 
 // A link of mass 0 (or without <inertial>) is a frame; it has no inertia.

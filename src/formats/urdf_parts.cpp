@@ -1,7 +1,13 @@
-// What a URDF import ignores, and numbers as the model's text.
+// What an import ignores, numbers as the model's text, and the model's YAML.
 #include "urdf_parts.hpp"
 
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
+
+#include "unidyn/symbolic/printable_text.hpp"
 
 namespace unidyn::formats {
 
@@ -40,6 +46,85 @@ std::string vector_text(const std::vector<Number>& numbers) {
   std::string text = "[";
   for (const Number& x : numbers) text += (text.size() > 1 ? ", " : "") + x.text;
   return text + "]";
+}
+
+std::string exact_text(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+
+std::string tensor_text(const std::vector<std::vector<std::string>>& rows) {
+  std::string text = "{tensor: [";
+  for (std::size_t i = 0; i < 3; ++i) {
+    text += (i ? "], [" : "[") + rows[i][0] + ", " + rows[i][1] + ", " + rows[i][2];
+  }
+  return text + "]]}";
+}
+
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : printable(text)) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+void expect_realisable(const XmlSource& source, const tinyxml2::XMLElement& element,
+                       const Eigen::Matrix3d& J) {
+  const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(J).eigenvalues();
+  const double tolerance = 1e-12 * std::max(1.0, moments.cwiseAbs().maxCoeff());
+  const std::string text = "the principal moments are " + exact_text(moments[0]) + ", " +
+                           exact_text(moments[1]) + ", " + exact_text(moments[2]);
+  if (moments.minCoeff() < -tolerance) {
+    source.refuse(element, "an inertia tensor must be positive semi-definite: " + text);
+  }
+  for (int i = 0; i < 3; ++i) {
+    if (moments[i] > moments[(i + 1) % 3] + moments[(i + 2) % 3] + tolerance) {
+      source.refuse(element,
+                    "no body has this inertia: a principal moment exceeds the sum of the other "
+                    "two (" +
+                        text + ")");
+    }
+  }
+}
+
+std::string model_yaml(const ModelHeader& header, const Written& w) {
+  const std::string article = header.format == "MJCF" ? "an " : "a ";
+  std::string yaml = "# Written by `unidyn import` from " + article + header.format +
+                     " file; docs/formats.md says what maps to what.\n";
+  yaml += "unidyn: 1\nname: " + quoted(header.name) + "\n";
+  yaml += "description: " +
+          quoted("Imported by unidyn from " + header.file + " (" + header.format + ")") + "\n";
+  yaml += "parameters: " + header.parameters + "\n";
+  yaml += "coordinates: [" + joined(w.coordinates) + "]\n\nbodies:\n";
+  for (const auto& line : w.bodies) yaml += line + "\n";
+  if (!header.gravity.empty() || !w.dampers.empty()) yaml += "\nforces:\n";
+  if (!header.gravity.empty()) yaml += header.gravity + "\n";
+  for (const auto& line : w.dampers) yaml += line + "\n";
+  yaml += "\ninitial: {" + joined(w.initial) + "}\n";
+  yaml += "simulate: {t_end: 5, output_step: 0.01}\n";
+  return yaml;
+}
+
+std::string read_bounded_file(const std::string& path, std::size_t max_bytes,
+                              const std::string& what) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ModelError({path, 0, 0}, "cannot open the " + what);
+  std::string text;
+  std::vector<char> block(1 << 16);
+  for (std::streamsize got; (got = in.rdbuf()->sgetn(block.data(), 1 << 16)) > 0;) {
+    text.append(block.data(), static_cast<std::size_t>(got));
+    if (text.size() > max_bytes) break;
+  }
+  return text;
 }
 
 }  // namespace unidyn::formats

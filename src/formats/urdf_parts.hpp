@@ -1,7 +1,9 @@
-// The parts of a URDF import shared by its files: what was ignored, numbers as YAML text, and the
-// lines of a link's body (its inertia and its visual).
+// The parts of an import shared by its files and by the URDF and MJCF importers: what was ignored,
+// numbers as YAML text, the model's YAML, and (URDF) the lines of a link's body.
 #pragma once
 
+#include <Eigen/Core>
+#include <cstddef>
 #include <initializer_list>
 #include <map>
 #include <string>
@@ -34,6 +36,50 @@ void ignore_others(const XmlSource& source, const tinyxml2::XMLElement& element,
 
 // "[a, b, c]" of the numbers as typed.
 std::string vector_text(const std::vector<Number>& numbers);
+
+// The number with 17 significant digits (it reads back as the same double).
+std::string exact_text(double x);
+
+// "{tensor: [[J11, J12, J13], [J21, J22, J23], [J31, J32, J33]]}" of the components' texts.
+std::string tensor_text(const std::vector<std::vector<std::string>>& rows);
+
+// A YAML double-quoted string of printable text.
+std::string quoted(const std::string& text);
+
+// "a, b, c"
+std::string joined(const std::vector<std::string>& items);
+
+// A tensor a body can have (as the model reader checks it): positive semi-definite and each
+// principal moment at most the sum of the other two (7.18′); else refused at `element`.
+void expect_realisable(const XmlSource& source, const tinyxml2::XMLElement& element,
+                       const Eigen::Matrix3d& J);
+
+// What an imported model is written from: the bodies' lines, the coordinates, the forces after
+// gravity (dampers), the initial values.
+struct Written {
+  std::vector<std::string> bodies;
+  std::vector<std::string> coordinates;
+  std::vector<std::string> dampers;
+  std::vector<std::string> initial;
+};
+
+// The model's header and gravity: `format` ("URDF", "MJCF"), `parameters` ("{g: 9.81}") and the
+// gravity force's line ("  - gravity: -g*E3", or "" for none).
+struct ModelHeader {
+  std::string name;
+  std::string file;
+  std::string format;
+  std::string parameters;
+  std::string gravity;
+};
+
+// The model's YAML: header, parameters, coordinates, bodies, forces, initial state, run.
+std::string model_yaml(const ModelHeader& header, const Written& written);
+
+// A file's text, read in blocks and refused past `max_bytes` (/dev/zero, a log file named by
+// mistake): `what` names it in the messages ("URDF file").
+std::string read_bounded_file(const std::string& path, std::size_t max_bytes,
+                              const std::string& what);
 
 // What a link's body is written from.
 struct LinkContext {

@@ -1,0 +1,43 @@
+// The parts of an MJCF import shared by its files: what a body is written with, and its bodies.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+#include "urdf_parts.hpp"
+#include "urdf_tree.hpp"
+
+namespace unidyn::formats {
+
+// What the bodies are written with: <compiler>'s angle unit, the names, and what is written.
+struct MjcfContext {
+  const XmlSource& source;
+  std::vector<std::string>& notes;
+  Ignored& ignored;
+  Names& names;
+  Written& written;
+  bool degrees = true;            // <compiler angle>: MuJoCo's default is degree
+  bool inertia_from_geom = true;  // <compiler inertiafromgeom> "auto" (the default) or "false"
+  int bodies = 0;                 // MuJoCo's ids: the world is body 0
+  int joints = 0;
+};
+
+// An element's orientation (quat, euler or axisangle; none is the identity): the model's
+// `rotation:` text ("" for none) and its value.
+struct Orientation {
+  std::string text;
+  Eigen::Quaterniond value = Eigen::Quaterniond::Identity();
+};
+Orientation orientation(const MjcfContext& context, const tinyxml2::XMLElement& element);
+
+// The bodies under <worldbody> (or a <body>) whose frame is `parent` ("" for the ground),
+// depth-first in file order (MuJoCo's order of bodies and of qpos).
+void write_child_bodies(MjcfContext& context, const tinyxml2::XMLElement& parent_element,
+                        const std::string& parent);
+
+// The body lines after its `joint:` from <inertial>: mass, inertia, centre (mass: 0 without).
+std::vector<std::string> inertial_lines(const MjcfContext& context,
+                                        const tinyxml2::XMLElement& body, const std::string& name);
+
+}  // namespace unidyn::formats

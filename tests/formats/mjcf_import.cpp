@@ -1,0 +1,167 @@
+// MJCF files imported as the model language (src/formats/mjcf*.cpp): what maps to what, line by
+// line; refusals at the file, line and column of their cause; notes; and a free body whose
+// acceleration is computed here by hand.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <string>
+
+#include "unidyn/equations/lagrange.hpp"
+#include "unidyn/formats/mjcf.hpp"
+#include "unidyn/integrate/simulation.hpp"
+#include "unidyn/io/model_file.hpp"
+#include "unidyn/numeric/compiled_system.hpp"
+#include "unidyn/symbolic/expression.hpp"
+
+namespace unidyn {
+namespace {
+
+using formats::import_mjcf;
+
+// A model of the given <worldbody> contents: <mujoco> is line 1, <worldbody> line 2, the
+// contents start on line 3.
+std::string world(const std::string& bodies, const std::string& before = "") {
+  return "<mujoco model=\"m\">" + before + "\n<worldbody>\n" + bodies + "</worldbody>\n</mujoco>\n";
+}
+
+bool has_line(const std::string& yaml, const std::string& line) {
+  return ("\n" + yaml).find("\n" + line + "\n") != std::string::npos;
+}
+
+void expect_refused(const std::string& text, const std::string& expected) {
+  try {
+    import_mjcf(text, "t.xml");
+    ADD_FAILURE() << "not refused; expected " << expected;
+  } catch (const ModelError& e) {
+    EXPECT_EQ(std::string(e.what()).substr(0, expected.size()), expected) << e.what();
+  }
+}
+
+const std::string kInertial = "<inertial pos=\"0 0 0\" mass=\"1\" diaginertia=\"0.1 0.1 0.1\"/>";
+
+TEST(MjcfImport, MapsBodiesJointsInertialsAndGravity) {
+  const std::string text = world(
+      "  <body name=\"torso\" pos=\"0 0 1.5\">\n"
+      "    <freejoint name=\"root\"/>\n"
+      "    <inertial pos=\"0 0 0.1\" mass=\"4\" diaginertia=\"0.1 0.2 0.3\"/>\n"
+      "    <body name=\"head\" pos=\"0 0 0.4\">\n"
+      "      <joint name=\"neck\" type=\"ball\"/>\n"
+      "      " +
+          kInertial +
+          "\n"
+          "      <body name=\"jaw\" euler=\"0 0 90\">\n"
+          "        <joint name=\"chew\" axis=\"1 0 0\" damping=\"0.2\"/>\n"
+          "        <inertial pos=\"0.1 0 0\" quat=\"0 0 0 1\" mass=\"0.3\" "
+          "fullinertia=\"0.01 0.02 0.02 0.001 0.002 0\"/>\n"
+          "      </body>\n"
+          "    </body>\n"
+          "  </body>\n",
+      "<option gravity=\"0 0 -9.8\"/>");
+  const auto model = import_mjcf(text, "t.xml");
+  for (const char* line : {
+           "name: \"m\"",
+           "description: \"Imported by unidyn from t.xml (MJCF)\"",
+           "parameters: {g: 9.8}",
+           "coordinates: [root_x, root_y, root_z, root_e0, root_e1, root_e2, root_e3, neck_e0, "
+           "neck_e1, neck_e2, neck_e3, chew]",
+           "  torso:",
+           "    joint: {floating: [root_x, root_y, root_z, root_e0, root_e1, root_e2, root_e3]}",
+           "    mass: 4",
+           "    inertia: [0.1, 0.2, 0.3]",
+           "    center: torso.frame_point([0, 0, 0.1])",
+           "    joint: {parent: torso, origin: [0, 0, 0.4], ball: [neck_e0, neck_e1, neck_e2, "
+           "neck_e3]}",
+           "    joint: {parent: head, rotation: {axis: [0, 0, 1], angle: 90*deg}, revolute: chew, "
+           "axis: [1, 0, 0]}",
+           "    inertia: {tensor: [[0.01, 0.001, -0.002], [0.001, 0.02, 0], [-0.002, 0, 0.02]]}",
+           "  - gravity: -g*E3",
+           "  - torsion_damper: {angle: chew, coefficient: 0.2}",
+           "initial: {root_z: 1.5, root_e0: 1, neck_e0: 1}",
+       }) {
+    EXPECT_TRUE(has_line(model.yaml, line)) << "missing: " << line << "\nin:\n" << model.yaml;
+  }
+  ASSERT_EQ(model.notes.size(), 1u);
+  EXPECT_EQ(model.notes[0],
+            "t.xml:11:72: the fullinertia on the turned <inertial> frame turned onto the body "
+            "frame: R J R^T");
+}
+
+TEST(MjcfImport, NotesUnnamedJointsContactsAndIgnoredElements) {
+  const std::string text =
+      "<mujoco>\n<worldbody>\n  <geom type=\"plane\" size=\"1 1 1\"/>\n"
+      "  <body>\n    <joint/>\n    " +
+      kInertial +
+      "\n  </body>\n</worldbody>\n<actuator><motor joint=\"joint0\"/></actuator>\n"
+      "<sensor/>\n</mujoco>\n";
+  const auto model = import_mjcf(text, "t.xml");
+  EXPECT_TRUE(has_line(model.yaml, "coordinates: [joint0]")) << model.yaml;
+  EXPECT_TRUE(has_line(model.yaml, "name: \"MuJoCo Model\"")) << model.yaml;
+  ASSERT_EQ(model.notes.size(), 6u);
+  EXPECT_EQ(model.notes[0],
+            "t.xml:1:1: contacts between geoms are not modelled (the file's geoms collide in "
+            "MuJoCo: contype and conaffinity are on)");
+  EXPECT_EQ(model.notes[1], "t.xml:4:3: an unnamed body is named body1 (its MuJoCo id)");
+  EXPECT_EQ(model.notes[2], "t.xml:5:5: an unnamed joint is named joint0 (its MuJoCo id)");
+  EXPECT_EQ(model.notes[3],
+            "t.xml:9:1: <actuator> ignored: it does not change the passive dynamics");
+  EXPECT_EQ(model.notes[5], "t.xml:3:3: <geom> ignored");
+}
+
+TEST(MjcfImport, RefusesWithFileLineAndColumn) {
+  expect_refused(world("  <body pos=\"0 0 1x\"/>\n"),
+                 "t.xml:3:18: body pos: '1x' is not a finite decimal number");
+  expect_refused(world("  <body><joint type=\"hinj\"/>" + kInertial + "</body>\n"),
+                 "t.xml:3:22: unknown joint type 'hinj' (expected hinge, slide, ball or free)");
+  expect_refused(world("  <body><geom type=\"plane\" size=\"0.1 0.2 1\"/></body>\n"),
+                 "t.xml:3:21: a body's inertia from a plane geom is not supported yet");
+  expect_refused(world("  <body><geom size=\"0.1\"/><geom size=\"0.2\"/></body>\n"),
+                 "t.xml:3:27: a body's inertia from several geoms is not supported yet");
+  expect_refused(world("  <body><body><freejoint/>" + kInertial + "</body></body>\n"),
+                 "t.xml:3:15: a free joint moves a body of <worldbody> only");
+  expect_refused(world("  <body euler=\"0 0 1\"/>\n", "<compiler eulerseq=\"zyx\"/>"),
+                 "t.xml:1:39: only eulerseq=\"xyz\" (MuJoCo's default) is supported yet");
+  expect_refused(world("  <body/>\n", "<equality/>"),
+                 "t.xml:1:19: closed loops from <equality> are not supported yet");
+  expect_refused(world("  <body/>\n", "<default/>"),
+                 "t.xml:1:19: <default> classes are not supported yet");
+  expect_refused(world("  <include file=\"other.xml\"/>\n"),
+                 "t.xml:3:3: <include> is not supported: unidyn reads one file");
+  expect_refused(world("  <body childclass=\"arm\"/>\n"),
+                 "t.xml:3:21: childclass= is not supported: <default> classes are not supported");
+  expect_refused(world("  <body><joint stiffness=\"2\"/>" + kInertial + "</body>\n"),
+                 "t.xml:3:27: joint stiffness is not supported yet");
+  expect_refused(world("  <body><joint type=\"slide\" damping=\"1\"/>" + kInertial + "</body>\n"),
+                 "t.xml:3:38: joint damping on a slide joint is not supported yet");
+  expect_refused("<robot name=\"r\"/>\n", "t.xml:1:1: expected <mujoco>, found <robot>");
+}
+
+// A free body falls: on the Euler parameters' constraint its centre accelerates at the
+// gravity of <option> (here along −E2), turned or not, and its rotation does not accelerate
+// when it does not turn. By hand: ẍ = g_vector, ë = 0 at ω = 0.
+TEST(MjcfImport, FreeBodyFallsWithTheOptionsGravity) {
+  const std::string text = world(
+      "  <body name=\"b\" pos=\"1 2 3\" quat=\"0.6 0 0.8 0\">\n    "
+      "<freejoint name=\"f\"/>\n    <inertial pos=\"0.1 0 0\" "
+      "mass=\"2\" diaginertia=\"0.1 0.2 0.25\"/>\n  </body>\n",
+      "<option gravity=\"0 -3.5 0\"/>");
+  const auto model = import_mjcf(text, "t.xml");
+  EXPECT_TRUE(has_line(model.yaml,
+                       "initial: {f_x: 1, f_y: 2, f_z: 3, f_e0: 0.59999999999999998, "
+                       "f_e2: 0.80000000000000004}"))
+      << model.yaml;
+  const System system = parse_model(model.yaml, "t.xml (imported)");
+  const CompiledSystem compiled(system, lagrange_equations(system));
+  CompiledSystemData data = compiled.make_data();
+  const std::vector<double> parameters = initial_state(system, {}).parameters;
+  Eigen::VectorXd q(7), qdot = Eigen::VectorXd::Zero(7), qddot, lambda;
+  q << 1, 2, 3, 0.6, 0, 0.8, 0;
+  compiled.solve(0, q, qdot, parameters, qddot, lambda, data);
+  // the centre of mass is off the frame: the origin's acceleration is g too at ω = 0, α = 0
+  EXPECT_NEAR(qddot[0], 0, 1e-12);
+  EXPECT_NEAR(qddot[1], -3.5, 1e-12);
+  EXPECT_NEAR(qddot[2], 0, 1e-12);
+  for (int i = 3; i < 7; ++i) EXPECT_NEAR(qddot[i], 0, 1e-12) << i;
+}
+
+}  // namespace
+}  // namespace unidyn

@@ -1,0 +1,191 @@
+// MuJoCo 2.2.2 as an oracle for the imported formats (tests/formats/*_against_mujoco.cpp): a file
+// read by unidyn and by MuJoCo, an engine written independently of unidyn, at random states
+// (q, q̇): the mass matrix M, the forcing f of Lagrange's equations M q̈ = f (book (3.7); no
+// constraints) and the accelerations q̈ agree with MuJoCo's mj_fullM, −qfrc_bias and the qacc of
+// mj_forward.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "support/oracles.hpp"
+#include "unidyn/commands/model_source.hpp"
+#include "unidyn/equations/lagrange.hpp"
+#include "unidyn/integrate/simulation.hpp"
+#include "unidyn/numeric/compiled_system.hpp"
+
+#ifdef UNIDYN_HAVE_MUJOCO
+#include <mujoco/mujoco.h>
+#endif
+
+namespace unidyn::mujoco_oracle {
+namespace {
+
+#ifdef UNIDYN_HAVE_MUJOCO
+
+// Both engines are exact on these models up to rounding: a relative error this large is a
+// difference in the physics. (The full-inertia model keeps it too: its tensors have one product
+// of inertia each, which MuJoCo diagonalises in one Jacobi rotation — its body_inertia and
+// body_iquat give back the tensors written, turned by the inertial rpy, to 4.9e-16 .. 5.9e-16
+// relative (measured); a tensor with two or three products came back 6.6e-8 .. 4.1e-7 off.)
+constexpr double kTolerance = 1e-10;
+
+// A test model of tests/formats/models by name, or a file by its absolute path.
+std::string formats_model(const std::string& file) {
+  if (file.starts_with("/")) return file;
+  std::string path = UNIDYN_FORMATS_DIR;
+  path.append("/").append(file);
+  return path;
+}
+
+// One file in MuJoCo: its model and data, freed with it.
+struct Mujoco {
+  std::unique_ptr<mjModel, decltype(&mj_deleteModel)> model{nullptr, mj_deleteModel};
+  std::unique_ptr<mjData, decltype(&mj_deleteData)> data{nullptr, mj_deleteData};
+
+  explicit Mujoco(const std::string& path) {
+    char error[1000] = "";
+    model.reset(mj_loadXML(path.c_str(), nullptr, error, sizeof error));
+    if (!model) throw std::runtime_error("MuJoCo refused " + path + ": " + error);
+    data.reset(mj_makeData(model.get()));
+  }
+  int dofs() const { return model->nv; }
+  // The joint of dof i (hinges and slides: one dof each).
+  std::string joint_name(int i) const {
+    return mj_id2name(model.get(), mjOBJ_JOINT, model->dof_jntid[i]);
+  }
+};
+
+// The oracle measures the rigid tree alone: gravity −9.81 E3, hinges and slides without
+// damping, armature, friction loss or stiffness; and its dofs are unidyn's coordinates, in order.
+void expect_plain_tree(const Mujoco& mj, const System& system) {
+  const mjModel& m = *mj.model;
+  EXPECT_EQ(m.opt.gravity[0], 0.0);
+  EXPECT_EQ(m.opt.gravity[1], 0.0);
+  EXPECT_EQ(m.opt.gravity[2], -9.81);
+  ASSERT_EQ(m.nq, m.nv);
+  for (int j = 0; j < m.njnt; ++j) {
+    EXPECT_TRUE(m.jnt_type[j] == mjJNT_HINGE || m.jnt_type[j] == mjJNT_SLIDE) << j;
+    EXPECT_EQ(m.jnt_stiffness[j], 0.0) << j;
+  }
+  for (int i = 0; i < m.nv; ++i) {
+    EXPECT_EQ(m.dof_damping[i] + m.dof_armature[i] + m.dof_frictionloss[i], 0.0) << i;
+  }
+  ASSERT_EQ(system.coordinates().size(), static_cast<std::size_t>(m.nv));
+  for (int i = 0; i < m.nv; ++i) {
+    ASSERT_EQ(system.coordinates()[static_cast<std::size_t>(i)].name, mj.joint_name(i));
+  }
+}
+
+// A random state inside every joint's range: angles within ±2 rad (the arm's narrowest limits are
+// ±2.09), slides within ±0.5 m, rates within ±2.
+void random_state(const Mujoco& mj, test::Random& random, Eigen::VectorXd& q,
+                  Eigen::VectorXd& qdot) {
+  q.resize(mj.dofs());
+  qdot.resize(mj.dofs());
+  for (int i = 0; i < mj.dofs(); ++i) {
+    const bool slide = mj.model->jnt_type[mj.model->dof_jntid[i]] == mjJNT_SLIDE;
+    q[i] = slide ? random.uniform(-0.5, 0.5) : random.uniform(-2.0, 2.0);
+    qdot[i] = random.uniform(-2.0, 2.0);
+  }
+}
+
+// M, f of M q̈ = f, and q̈ at one state.
+struct Dynamics {
+  Eigen::MatrixXd M;
+  Eigen::VectorXd f, qddot;
+};
+
+// MuJoCo's: M from its sparse qM, f = −qfrc_bias (Coriolis, centripetal and gravity forces; no
+// passive, applied or actuator force), q̈ = qacc; no constraint row may be active.
+Dynamics mujoco_dynamics(Mujoco& mj, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
+  const mjModel* m = mj.model.get();
+  mjData* d = mj.data.get();
+  const int n = mj.dofs();
+  Eigen::Map<Eigen::VectorXd>(d->qpos, n) = q;
+  Eigen::Map<Eigen::VectorXd>(d->qvel, n) = qdot;
+  mj_forward(m, d);
+  EXPECT_EQ(d->nefc, 0);
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> M(n, n);
+  mj_fullM(m, M.data(), d->qM);
+  return {M, -Eigen::Map<const Eigen::VectorXd>(d->qfrc_bias, n),
+          Eigen::Map<const Eigen::VectorXd>(d->qacc, n)};
+}
+
+// unidyn's: the compiled Lagrange's equations solved at the state.
+Dynamics unidyn_dynamics(const CompiledSystem& compiled, const std::vector<double>& parameters,
+                         CompiledSystemData& data, const Eigen::VectorXd& q,
+                         const Eigen::VectorXd& qdot) {
+  Eigen::VectorXd qddot, lambda;
+  compiled.solve(0, q, qdot, parameters, qddot, lambda, data);
+  return {data.mass_matrix, data.forcing, qddot};
+}
+
+double relative(const Eigen::MatrixXd& value, const Eigen::MatrixXd& reference) {
+  return (value - reference).norm() / reference.norm();
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The model in both engines at 20 random states: the largest relative (Frobenius) errors of M, f
+// and q̈ stay within kTolerance. Prints them, and unidyn's times to load, derive and compile.
+void expect_agreement_with_mujoco(const std::string& file) {
+  Mujoco mj(formats_model(file));
+  auto start = std::chrono::steady_clock::now();
+  const commands::LoadedModel loaded = commands::load_named_model(formats_model(file));
+  const double load_time = seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  const EquationsOfMotion equations = lagrange_equations(loaded.system);
+  const double derive_time = seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  const CompiledSystem compiled(loaded.system, equations);
+  const double compile_time = seconds_since(start);
+  expect_plain_tree(mj, loaded.system);
+  if (::testing::Test::HasFatalFailure()) return;
+
+  CompiledSystemData data = compiled.make_data();
+  const std::vector<double> parameters = initial_state(loaded.system, {}).parameters;
+  test::Random random;
+  double M_error = 0, f_error = 0, qddot_error = 0;
+  for (int k = 0; k < 20; ++k) {
+    Eigen::VectorXd q, qdot;
+    random_state(mj, random, q, qdot);
+    const Dynamics reference = mujoco_dynamics(mj, q, qdot);
+    const Dynamics ours = unidyn_dynamics(compiled, parameters, data, q, qdot);
+    M_error = std::max(M_error, relative(ours.M, reference.M));
+    f_error = std::max(f_error, relative(ours.f, reference.f));
+    qddot_error = std::max(qddot_error, relative(ours.qddot, reference.qddot));
+  }
+  EXPECT_LT(M_error, kTolerance);
+  EXPECT_LT(f_error, kTolerance);
+  EXPECT_LT(qddot_error, kTolerance);
+  test::record("M_error", M_error);
+  test::record("f_error", f_error);
+  test::record("qddot_error", qddot_error);
+  std::printf(
+      "%s against MuJoCo %s: relative errors M %.3g, f %.3g, q'' %.3g; unidyn's load %.3f s, "
+      "derive %.3f s, compile %.3f s\n",
+      file.c_str(), mj_versionString(), M_error, f_error, qddot_error, load_time, derive_time,
+      compile_time);
+}
+
+#else
+
+void expect_agreement_with_mujoco(const std::string&) {
+  GTEST_SKIP() << "MuJoCo is not installed (scripts/setup.sh test installs libmujoco-dev)";
+}
+
+#endif
+
+}  // namespace
+}  // namespace unidyn::mujoco_oracle
