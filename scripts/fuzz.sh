@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzes the model-file reader and the expression parser with libFuzzer (clang, AddressSanitizer +
+# Fuzzes the model-file reader, the expression parser and the URDF/MJCF importers with libFuzzer (clang, AddressSanitizer +
 # UndefinedBehaviorSanitizer). Usage: scripts/fuzz.sh [SECONDS]   (each target; default 30)
 #
 # The corpus kept in the repository (fuzz/corpus/<target>) and the bundled models seed each run;
@@ -17,15 +17,16 @@ bash scripts/setup.sh fuzz
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Debug \
   "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" -DUNIDYN_FUZZ=ON -DUNIDYN_BUILD_TESTS=OFF \
   -DUNIDYN_BUILD_BENCH=OFF >/dev/null
-cmake --build build-fuzz -j "$(nproc)" --target model_file_fuzzer expression_fuzzer
+cmake --build build-fuzz -j "$(nproc)" --target model_file_fuzzer expression_fuzzer robot_file_fuzzer
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-for target in model_file expression; do
+for target in model_file expression robot_file; do
   work="build-fuzz/corpus/$target"
   mkdir -p "$work"
   seeds=("fuzz/corpus/$target")
   if [[ "$target" == model_file ]]; then seeds+=(models); fi
+  if [[ "$target" == robot_file ]]; then seeds+=(examples/urdf examples/mjcf tests/formats/models); fi
   echo "fuzz: $target for $seconds s"
   log="build-fuzz/$target.log"
   status=0

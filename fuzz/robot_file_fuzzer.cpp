@@ -1,0 +1,25 @@
+// libFuzzer target: the URDF and MJCF importers (tinyxml2, strict numbers, the tree, the YAML they
+// write) on arbitrary bytes. A model error (with its position) is the expected way to refuse
+// input; anything else that escapes — another exception, a crash, a sanitizer report, a hang — is
+// a bug.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "unidyn/formats/mjcf.hpp"
+#include "unidyn/formats/urdf.hpp"
+#include "unidyn/symbolic/expression.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  try {
+    (void)unidyn::formats::import_urdf(text, "fuzz.urdf");
+  } catch (const unidyn::ModelError&) {
+    // refused with file:line:column
+  }
+  try {
+    (void)unidyn::formats::import_mjcf(text, "fuzz.xml");
+  } catch (const unidyn::ModelError&) {
+  }
+  return 0;
+}
