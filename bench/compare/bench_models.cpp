@@ -4,6 +4,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "unidyn/formats/mjcf.hpp"
+#include "unidyn/formats/urdf.hpp"
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/rotation/euler_parameters.hpp"
 
@@ -32,6 +34,13 @@ System equations_only(const std::string& path) {
 }  // namespace
 
 BenchModel bench_model(const std::string& name, const std::string& models) {
+  // a robot file, imported as `unidyn` imports it: its (q, q̇) are the peer's state
+  if (name.ends_with(".urdf")) {
+    return {name, parse_model(formats::import_urdf_file(name).yaml, name), std::nullopt};
+  }
+  if (name.ends_with(".xml")) {
+    return {name, parse_model(formats::import_mjcf_file(name).yaml, name), std::nullopt};
+  }
   if (name.starts_with("pendulum-")) {
     const int links = std::stoi(name.substr(9));
     if (links < 1 || links > 50) throw std::invalid_argument("pendulum-N needs 1 <= N <= 50");

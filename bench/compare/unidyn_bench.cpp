@@ -100,7 +100,8 @@ int derive(const std::string& name, const std::map<std::string, std::string>& o)
   const double tape_seconds = seconds_since(start);
   CompileOptions native_options = compile_options("native");
   // an empty cache of its own, so that the compilation is timed
-  native_options.native_options.cache_directory = "/tmp/unidyn-bench-cache-" + name;
+  native_options.native_options.cache_directory =
+      "/tmp/unidyn-bench-cache-" + std::filesystem::path(name).filename().string();
   std::filesystem::remove_all(native_options.native_options.cache_directory);
   start = Clock::now();
   const CompiledSystem native(model.system, equations, native_options);

@@ -71,6 +71,8 @@ std::string buildMjcf(const Model& model) {
              formatNumber(kFreeInertia[1]) + " " + formatNumber(kFreeInertia[2]) + "\"/>\n";
       xml += "    </body>\n";
       break;
+    case ModelKind::kRobotFile:  // read from its file (loadFile)
+      break;
   }
   xml += "  </worldbody>\n</mujoco>\n";
   return xml;
@@ -106,11 +108,28 @@ std::unique_ptr<mjModel, ModelDeleter> loadMjcf(const std::string& xml) {
   return m;
 }
 
+// A URDF or MJCF file as MuJoCo reads it.
+std::unique_ptr<mjModel, ModelDeleter> loadFile(const std::string& path) {
+  char error[1024] = "";
+  std::unique_ptr<mjModel, ModelDeleter> m(mj_loadXML(path.c_str(), nullptr, error, sizeof error));
+  if (!m) throw std::runtime_error("mj_loadXML " + path + ": " + error);
+  return m;
+}
+
 class MujocoBackend final : public Backend {
  public:
   explicit MujocoBackend(const Model& model)
-      : model_(model), m_(loadMjcf(buildMjcf(model))), d_(mj_makeData(m_.get())) {
+      : model_(model),
+        m_(model.kind == ModelKind::kRobotFile ? loadFile(model.name) : loadMjcf(buildMjcf(model))),
+        d_(mj_makeData(m_.get())) {
     if (!d_) throw std::runtime_error("mj_makeData failed");
+    // a robot file: its hinge and slide joints' (q, q̇), no contact (as unidyn reads it)
+    if (model.kind == ModelKind::kRobotFile) {
+      if (m_->nq != m_->nv) throw std::runtime_error("a robot file of hinge and slide joints only");
+      m_->opt.disableflags |= mjDSBL_CONTACT;
+      model_.links = m_->nv;
+      return;
+    }
     const int expectedNv = model.kind == ModelKind::kPendulum   ? model.links
                            : model.kind == ModelKind::kHeavyTop ? 3
                                                                 : 6;
@@ -229,6 +248,12 @@ class MujocoBackend final : public Backend {
     mjtNum* qpos = d_->qpos;
     mjtNum* qvel = d_->qvel;
     switch (model_.kind) {
+      case ModelKind::kRobotFile:
+        if (x.size() != 2 * static_cast<std::size_t>(model_.links)) {
+          throw UsageError("expected " + std::to_string(2 * model_.links) + " numbers (q, q̇) for " +
+                           model_.name);
+        }
+        [[fallthrough]];
       case ModelKind::kPendulum:
         for (int k = 0; k < model_.links; ++k) {
           qpos[k] = x[k];
@@ -253,7 +278,8 @@ class MujocoBackend final : public Backend {
     const mjtNum* qpos = d_->qpos;
     const mjtNum* qvel = d_->qvel;
     switch (model_.kind) {
-      case ModelKind::kPendulum: {
+      case ModelKind::kPendulum:
+      case ModelKind::kRobotFile: {
         std::vector<double> x(qpos, qpos + model_.links);
         x.insert(x.end(), qvel, qvel + model_.links);
         return x;

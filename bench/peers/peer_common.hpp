@@ -43,7 +43,9 @@ inline constexpr double kTopC = 0.002;
 inline constexpr double kFreeMass = 1.0;
 inline constexpr std::array<double, 3> kFreeInertia{2.0, 4.0, 5.0};
 
-enum class ModelKind { kPendulum, kHeavyTop, kTorqueFree };
+// kRobotFile: a URDF or MJCF file of hinge and slide joints, its state (q, q̇) in the file's joint
+// order and its output q̈ (the backend learns the size from the file).
+enum class ModelKind { kPendulum, kHeavyTop, kTorqueFree, kRobotFile };
 
 struct Model {
   ModelKind kind = ModelKind::kPendulum;
@@ -51,10 +53,15 @@ struct Model {
   std::string name;
 
   // Peer state: pendulum (q, q̇); bodies (w, x, y, z, ω_b).
-  std::size_t stateSize() const { return kind == ModelKind::kPendulum ? 2 * links : 7; }
+  std::size_t stateSize() const {
+    if (kind == ModelKind::kRobotFile) return 0;  // any (q, q̇): checked by the backend
+    return kind == ModelKind::kPendulum ? 2 * links : 7;
+  }
   // Peer output: pendulum q̈; bodies ω̇_b.
-  std::size_t accelerationSize() const { return kind == ModelKind::kPendulum ? links : 3; }
-  bool isBody() const { return kind != ModelKind::kPendulum; }
+  std::size_t accelerationSize() const {
+    return kind == ModelKind::kPendulum || kind == ModelKind::kRobotFile ? links : 3;
+  }
+  bool isBody() const { return kind == ModelKind::kHeavyTop || kind == ModelKind::kTorqueFree; }
 };
 
 // Thrown for command-line mistakes (exit status 2, usage printed).
@@ -76,7 +83,12 @@ inline Model parseModel(const std::string& name) {
   Model model;
   model.name = name;
   const std::string prefix = "pendulum-";
-  if (name == "heavy-top") {
+  const auto ends_with = [&](const std::string& end) {
+    return name.size() > end.size() && name.compare(name.size() - end.size(), end.size(), end) == 0;
+  };
+  if (ends_with(".urdf") || ends_with(".xml")) {
+    model.kind = ModelKind::kRobotFile;
+  } else if (name == "heavy-top") {
     model.kind = ModelKind::kHeavyTop;
   } else if (name == "torque-free") {
     model.kind = ModelKind::kTorqueFree;
@@ -90,7 +102,8 @@ inline Model parseModel(const std::string& name) {
     model.kind = ModelKind::kPendulum;
     model.links = static_cast<int>(n);
   } else {
-    throw UsageError("unknown model '" + name + "' (pendulum-N, heavy-top, torque-free)");
+    throw UsageError("unknown model '" + name +
+                     "' (pendulum-N, heavy-top, torque-free, a .urdf or .xml file)");
   }
   return model;
 }
@@ -127,7 +140,7 @@ inline std::vector<std::vector<double>> readStates(std::istream& in, const Model
     std::string field;
     while (fields >> field) state.push_back(parseNumber(field, "state value"));
     if (state.empty()) continue;
-    if (state.size() != model.stateSize()) {
+    if (model.stateSize() != 0 && state.size() != model.stateSize()) {
       throw UsageError("line " + std::to_string(lineNumber) + ": expected " +
                        std::to_string(model.stateSize()) + " numbers for " + model.name + ", got " +
                        std::to_string(state.size()));

@@ -159,6 +159,9 @@ class SimbodyBackend final : public Backend {
             Transform()));
         break;
       }
+      case ModelKind::kRobotFile:
+        throw UsageError(
+            "peer_simbody reads no robot files (Simbody's URDF reader is not in Debian)");
     }
   }
 

@@ -1,6 +1,8 @@
 // A body's frame from its parent's by a joint (include/unidyn/model/tree_joint.hpp).
 #include "unidyn/model/tree_joint.hpp"
 
+#include "unidyn/symbolic/trig_identities.hpp"
+
 namespace unidyn {
 
 std::size_t joint_coordinate_count(TreeJoint::Kind kind) {
@@ -61,13 +63,24 @@ FrameExpr joint_motion(const TreeJoint& joint, const std::vector<CoordinateSymbo
 
 }  // namespace
 
-// Q_B = Q_P R0 R(q), o_B = o_P + Q_P (p + R0 d(q))
+// Q_B = Q_P R0 R(q), o_B = o_P + Q_P (p + R0 d(q)), each entry with its angle sums combined: a
+// chain of parallel axes keeps cos(q1 + q2 + q3) rather than the 2^k products its matrices
+// multiply out to (a 20-link planar chain would not fit in memory).
 FrameExpr child_frame(const TreeJoint& joint, const FrameExpr& parent,
                       const std::vector<CoordinateSymbols>& coordinates) {
   const FrameExpr motion = joint_motion(joint, coordinates);
   const TensorExpr joint_frame = parent.rotation.mul(joint.fixed_rotation);
-  return {parent.origin + times(parent.rotation, joint.origin) + times(joint_frame, motion.origin),
-          joint_frame.mul(motion.rotation)};
+  FrameExpr child{
+      parent.origin + times(parent.rotation, joint.origin) + times(joint_frame, motion.origin),
+      joint_frame.mul(motion.rotation)};
+  for (int i = 0; i < 3; ++i) {
+    child.origin[i] = combine_angle_sums(child.origin[i]);
+    for (unsigned k = 0; k < 3; ++k) {
+      child.rotation(static_cast<unsigned>(i), k) =
+          combine_angle_sums(child.rotation(static_cast<unsigned>(i), k));
+    }
+  }
+  return child;
 }
 
 }  // namespace unidyn

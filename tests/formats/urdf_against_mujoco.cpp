@@ -33,5 +33,11 @@ TEST(UrdfAgainstMujoco, FullInertiaMassMatrixBiasAndAccelerations) {
   expect_agreement_with_mujoco("full-inertia.urdf");
 }
 
+// Twelve links on parallel axes: their frames must compose to angle sums (tree_joint.cpp), or the
+// derivation runs out of memory before it is compared.
+TEST(UrdfAgainstMujoco, TwelveLinkChainMassMatrixBiasAndAccelerations) {
+  expect_agreement_with_mujoco("twelve-link-chain.urdf");
+}
+
 }  // namespace
 }  // namespace unidyn
