@@ -19,8 +19,7 @@ std::string angle_text(const MjcfContext& context, const XMLElement& element, co
   const auto exact = exact_quarter_pi_multiple(angle.value);
   if (!exact || *exact == angle.text) return angle.text;
   context.notes.push_back(context.source.position(element, attribute).str() + ": " + attribute +
-                          " angle " + angle.text + " read as " + *exact +
-                          " (within 1e-12 rad of it: its sine and cosine exact)");
+                          " angle " + angle.text + " read as " + *exact + kExactAngleNote);
   return *exact;
 }
 

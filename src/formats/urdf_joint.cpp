@@ -91,7 +91,7 @@ std::string rpy_text(const LinkContext& context, const XMLElement& origin,
     std::string list;
     for (const auto& c : changed) list += (list.empty() ? "" : ", ") + c;
     context.notes.push_back(context.source.position(origin, "rpy").str() + ": rpy read " + list +
-                            " (within 1e-12 rad of it: its sine and cosine exact)");
+                            kExactAngleNote);
   }
   return vector_text(rpy);
 }

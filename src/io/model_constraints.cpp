@@ -123,11 +123,8 @@ void ModelReader::read_constraints(const YAML::Node& node, System& system) {
       if (!c.unilateral) fail(spec["restitution"], "restitution: needs unilateral: true");
       c.restitution = scalar_expr(spec["restitution"], scope, "restitution");
       expect_state_only(spec["restitution"], c.restitution, system, "a restitution", false);
-      for (const auto& q : system.coordinates()) {
-        if (c.restitution.has(q.value) || c.restitution.has(system.time())) {
-          fail(spec["restitution"], "a restitution is a number or depends on parameters only");
-        }
-      }
+      expect_parameters_only(spec["restitution"], c.restitution, system,
+                             "a restitution is a number or depends on parameters only");
     }
     if (spec["off_while"]) {
       if (c.kind != Constraint::Kind::velocity || c.unilateral) {

@@ -26,11 +26,8 @@ void ModelReader::read_impulses(const YAML::Node& node, System& system) {
     // its time: a number or parameters, after the start (a change at the start is an initial rate)
     impulse.time = scalar_expr(spec["time"], scope, "time");
     expect_state_only(spec["time"], impulse.time, system, "an impulse's time");
-    for (const auto& q : system.coordinates()) {
-      if (impulse.time.has(q.value) || impulse.time.has(system.time())) {
-        fail(spec["time"], "an impulse's time is a number or depends on parameters only");
-      }
-    }
+    expect_parameters_only(spec["time"], impulse.time, system,
+                           "an impulse's time is a number or depends on parameters only");
     impulse.impulse = vector_expr(spec["value"], scope, "value");
     expect_state_only(spec["value"], impulse.impulse, system, "an impulse");
     if (spec["at"]) {

@@ -188,6 +188,14 @@ class ModelReader {
       if (e.has(c.multiplier)) fail(node, what + " cannot depend on " + c.name + ".lambda");
     }
   }
+  // Refuses an expression of the coordinates, their rates or t: numbers and parameters only.
+  void expect_parameters_only(const YAML::Node& node, const Expr& e, const System& system,
+                              const std::string& message) const {
+    bool constant = !e.has(system.time());
+    for (const auto& q : system.coordinates())
+      constant = constant && !e.has(q.value) && !e.has(q.rate);
+    if (!constant) fail(node, message);
+  }
   void expect_state_only(const YAML::Node& node, const VectorExpr& v, const System& system,
                          const std::string& what, bool rates = false) const {
     for (int i = 0; i < 3; ++i) expect_state_only(node, v[i], system, what, rates);

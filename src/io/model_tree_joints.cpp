@@ -19,15 +19,6 @@ const std::vector<std::pair<std::string, TreeJoint::Kind>>& joint_motions() {
   return motions;
 }
 
-// Free of the coordinates, their rates and t: numbers and parameters.
-bool is_constant(const Expr& e, const System& system) {
-  if (e.has(system.time())) return false;
-  for (const auto& q : system.coordinates()) {
-    if (e.has(q.value) || e.has(q.rate)) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 // Q_B = Q_P R0 R(q), o_B = o_P + Q_P (p + R0 d(q)) on the parent's frame (the ground's: O, E_i).
@@ -72,8 +63,8 @@ TreeJoint ModelReader::tree_joint(const YAML::Node& node, const System& system) 
     joint.fixed_rotation = rotation(node["rotation"], system);
     for (unsigned i = 0; i < 3; ++i) {
       for (unsigned k = 0; k < 3; ++k) {
-        if (!is_constant(joint.fixed_rotation(i, k), system))
-          fail(node["rotation"], "a joint's fixed rotation is constant (numbers and parameters)");
+        expect_parameters_only(node["rotation"], joint.fixed_rotation(i, k), system,
+                               "a joint's fixed rotation is constant (numbers and parameters)");
       }
     }
   }
@@ -147,7 +138,7 @@ VectorExpr ModelReader::constant_vector(const YAML::Node& node, const System& sy
                                         const std::string& what) {
   const VectorExpr v = vector_expr(node, SystemScope(system), what);
   for (int i = 0; i < 3; ++i) {
-    if (!is_constant(v[i], system)) fail(node, what + " is constant: numbers and parameters");
+    expect_parameters_only(node, v[i], system, what + " is constant: numbers and parameters");
   }
   return v;
 }

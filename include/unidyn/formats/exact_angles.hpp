@@ -13,6 +13,10 @@ namespace unidyn::formats {
 // significant digits or more (1.5707963267949 is 3.2e-14 from π/2); 1.5708 (3.7e-6) is not.
 inline constexpr double kExactAngleTolerance = 1e-12;
 
+// What the importers' note says of an angle written as the multiple.
+inline constexpr const char* kExactAngleNote =
+    " (within 1e-12 rad of it: its sine and cosine exact)";
+
 // "pi/2", "-3*pi/4", "0", … when `radians` is within kExactAngleTolerance of k π/4; else none.
 std::optional<std::string> exact_quarter_pi_multiple(double radians);
 
