@@ -4,23 +4,12 @@
 #include <stdexcept>
 
 namespace unidyn {
-namespace {
-
-// M and f at (t, q, q̇), from a solve (which also factors M in data).
-void mass_and_forcing(const CompiledSystem& compiled, std::span<const double> parameters, double t,
-                      const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
-                      CompiledSystemData& data) {
-  Eigen::VectorXd qddot, lambda;
-  compiled.solve(t, q, qdot, parameters, qddot, lambda, data);
-}
-
-}  // namespace
 
 double virtual_work(const CompiledSystem& compiled, std::span<const double> parameters, double t,
                     const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                     const Eigen::VectorXd& qddot, const Eigen::VectorXd& d) {
   CompiledSystemData data = compiled.make_data();
-  mass_and_forcing(compiled, parameters, t, q, qdot, data);
+  compiled.mass_and_forcing(t, q, qdot, parameters, data);
   // (4.36) Σ (F_K − m_K r̈_K) · d_K in the coordinates
   return d.dot(data.forcing - data.mass_matrix * qddot);
 }
@@ -29,7 +18,7 @@ double gauss_constraint(const CompiledSystem& compiled, std::span<const double> 
                         double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                         const Eigen::VectorXd& qddot) {
   CompiledSystemData data = compiled.make_data();
-  mass_and_forcing(compiled, parameters, t, q, qdot, data);
+  compiled.mass_and_forcing(t, q, qdot, parameters, data);
   // ½ (q̈ − M⁻¹f)ᵀ M (q̈ − M⁻¹f) = ½ q̈ᵀ M q̈ − q̈ᵀ f + ½ fᵀ M⁻¹ f
   const Eigen::VectorXd free = data.mass_matrix.ldlt().solve(data.forcing);
   const Eigen::VectorXd away = qddot - free;

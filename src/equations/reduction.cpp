@@ -28,6 +28,8 @@ std::optional<std::size_t> solvable_coordinate(const System& system, const Expr&
 // (no chart) or follows the renumbering of the coordinates after k.
 void substitute_body(Body& body, const GiNaC::exmap& map, std::size_t k) {
   body.center = subs(body.center, map);
+  // a coordinate of the tree is now a function of the others: no longer a tree of joints
+  body.joint.reset();
   for (unsigned i = 0; i < 3; ++i) {
     for (unsigned j = 0; j < 3; ++j) body.rotation(i, j) = body.rotation(i, j).subs(map);
   }
@@ -79,6 +81,7 @@ Reduction eliminate_constraints(const System& full) {
       for (auto& b : reduced.bodies) substitute_body(b, map, *k);
       for (auto& f : reduced.forces) {
         f.potential = f.potential.subs(map);
+        f.angle.reset();
         for (auto& pf : f.forces) pf.force = subs(pf.force, map);
         for (auto& bf : f.body_forces) {
           bf.point = subs(bf.point, map);

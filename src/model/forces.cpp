@@ -24,6 +24,7 @@ ForceElement new_element(ForceElement::Kind kind, const std::string& label, bool
 
 ForceElement uniform_gravity(const System& system, const VectorExpr& g) {
   ForceElement element = new_element(ForceElement::Kind::gravity, "gravity", true);
+  element.field = g;
   for (std::size_t p = 0; p < system.particles.size(); ++p) {
     const Particle& particle = system.particles[p];
     // (2.5) U = −m g · r, F = −∂U/∂r = m g
@@ -143,6 +144,7 @@ ForceElement torsion_spring(const System& system, std::size_t angle,
                             const std::vector<AngleTorque>& unit_torque, const Expr& K,
                             const Expr& rest_angle) {
   ForceElement element = new_element(ForceElement::Kind::torsion_spring, "torsion_spring", true);
+  element.angle = angle;
   const Expr gamma = system.coordinates()[angle].value;
   // U = ½ K (γ − γ0)²; (8.27) M = −∂U/∂γ m_B
   element.potential = K * GiNaC::pow(gamma - rest_angle, 2) / 2;
@@ -155,6 +157,8 @@ ForceElement torsion_spring(const System& system, std::size_t angle,
 ForceElement torsion_damper(const System& system, std::size_t angle,
                             const std::vector<AngleTorque>& unit_torque, const Expr& c) {
   ForceElement element = new_element(ForceElement::Kind::torsion_damper, "torsion_damper", false);
+  element.angle = angle;
+  element.coefficient = c;
   // M = −c γ̇ m_B
   const Expr rate = system.coordinates()[angle].rate;
   for (const AngleTorque& m : unit_torque) {

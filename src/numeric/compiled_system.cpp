@@ -169,15 +169,19 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
     : n_(system.coordinates().size()),
       m_(system.constraints.size()),
       p_(system.parameters.size()),
-      assembly_(!equations.partial_velocity_terms.empty() && n_ >= options.assemble_from_coordinates
+      tree_(options.recursive_tree ? plan_tree(system) : TreePlan{nullptr, "not asked for"}),
+      assembly_(!tree_.tree && !equations.partial_velocity_terms.empty() &&
+                        n_ >= options.assemble_from_coordinates
                     ? std::make_shared<const InertiaAssembly>(equations.partial_velocity_terms, n_)
                     : nullptr),
-      dynamics_(assembly_
+      // a tree's dynamics tape is compiled only when asked for (dynamics())
+      dynamics_(tree_.tree ? Tape()
+                : assembly_
                     ? assembled_dynamics_tape(tape_inputs(system, false), equations, *assembly_)
                     : dynamics_tape(system, equations)),
       constraints_(compile_constraints(system, equations)),
       observer_(compile_observer(system, equations)) {
-  if (assembly_) {
+  if (assembly_ || tree_.tree) {
     full_dynamics_ = std::make_shared<DeferredTape>();
     full_dynamics_->inputs = tape_inputs(system, false);
     full_dynamics_->equations = equations;
@@ -246,6 +250,12 @@ bool CompiledSystem::compile_in_background(const NativeOptions& native_options) 
 }
 
 std::string CompiledSystem::evaluation() const {
+  const std::string tree =
+      tree_.tree ? "articulated-body algorithm over the tree, outputs by " : "";
+  return tree + tape_evaluation();
+}
+
+std::string CompiledSystem::tape_evaluation() const {
   if (!background_) return evaluation_;
   if (background_->state.load(std::memory_order_acquire) == BackgroundCompilation::compiling) {
     // the process waits for it at its end (~BackgroundCompilation): said here, not left to look
@@ -306,6 +316,7 @@ CompiledSystemData CompiledSystem::make_data() const {
   data.forcing.resize(n_);
   data.convective.resize(n_);
   data.assembly_scratch.resize(assembly_ ? assembly_->scratch_size() : 0);
+  if (tree_.tree) data.tree = tree_.tree->make_data();
   data.constraint_matrix.resize(m_, n_);
   data.constraint_bias.resize(m_);
   data.constraint_velocity_term.resize(m_);
@@ -334,9 +345,9 @@ const double* CompiledSystem::evaluate_at(const Tape& tape, double t, StateRef q
   return data.outputs.data();
 }
 
-void CompiledSystem::solve(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
-                           Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
-                           CompiledSystemData& data) const {
+void CompiledSystem::evaluate_dynamics(double t, StateRef q, StateRef qdot,
+                                       std::span<const double> parameters,
+                                       CompiledSystemData& data) const {
   const double* out = evaluate_at(dynamics_, t, q, qdot, parameters, data);
   const auto N = static_cast<Eigen::Index>(n_);
   const auto Mc = static_cast<Eigen::Index>(m_);
@@ -361,7 +372,46 @@ void CompiledSystem::solve(double t, StateRef q, StateRef qdot, std::span<const 
       Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
           constraint_rows, Mc, N);
   data.constraint_bias = Eigen::Map<const Eigen::VectorXd>(constraint_rows + m_ * n_, Mc);
+}
 
+void CompiledSystem::mass_and_forcing(double t, StateRef q, StateRef qdot,
+                                      std::span<const double> parameters,
+                                      CompiledSystemData& data) const {
+  if (!tree_.tree) {
+    evaluate_dynamics(t, q, qdot, parameters, data);
+    return;
+  }
+  tree_.tree->mass_and_forcing(t, q, qdot, parameters, data.mass_matrix, data.forcing, data.tree);
+}
+
+void CompiledSystem::solve_tree(double t, StateRef q, StateRef qdot,
+                                std::span<const double> parameters, Eigen::VectorXd& qddot,
+                                Eigen::VectorXd& lambda, CompiledSystemData& data) const {
+  lambda.resize(0);
+  try {
+    tree_.tree->accelerations(t, q, qdot, parameters, qddot, data.tree);
+  } catch (const std::domain_error& error) {
+    if (!q.allFinite() || !qdot.allFinite()) {
+      throw NotFiniteState("the state is not finite at t = " + std::to_string(t));
+    }
+    throw std::runtime_error("the mass matrix is not positive definite at t = " +
+                             std::to_string(t) + ": " + error.what());
+  }
+  if (!qddot.allFinite()) {
+    throw NotFiniteState("the accelerations are not finite at t = " + std::to_string(t));
+  }
+}
+
+void CompiledSystem::solve(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
+                           Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
+                           CompiledSystemData& data) const {
+  if (tree_.tree) {
+    solve_tree(t, q, qdot, parameters, qddot, lambda, data);
+    return;
+  }
+  evaluate_dynamics(t, q, qdot, parameters, data);
+  const double* M = data.mass_factor.data();
+  const auto Mc = static_cast<Eigen::Index>(m_);
   if (!all_finite(M, n_ * n_)) {
     throw NotFiniteState("the mass matrix is not finite at t = " + std::to_string(t));
   }

@@ -120,26 +120,62 @@ Dynamics mujoco_dynamics(Mujoco& mj, const Eigen::VectorXd& q, const Eigen::Vect
           Eigen::Map<const Eigen::VectorXd>(d->qacc, n)};
 }
 
-// unidyn's: the compiled Lagrange's equations solved at the state.
+// unidyn's recursive dynamics of the tree (numeric/tree_evaluation.hpp): M and f by the
+// composite-rigid-body and Newton–Euler algorithms, q̈ by the articulated-body algorithm.
 Dynamics unidyn_dynamics(const CompiledSystem& compiled, const std::vector<double>& parameters,
                          CompiledSystemData& data, const Eigen::VectorXd& q,
                          const Eigen::VectorXd& qdot) {
+  EXPECT_TRUE(compiled.recursive()) << compiled.why_not_recursive();
   Eigen::VectorXd qddot, lambda;
   compiled.solve(0, q, qdot, parameters, qddot, lambda, data);
+  compiled.mass_and_forcing(0, q, qdot, parameters, data);
   return {data.mass_matrix, data.forcing, qddot};
 }
 
+// unidyn's symbolic path: the compiled Lagrange's equations M q̈ = f (the dynamics tape, which
+// the analyses use), solved here.
+Dynamics symbolic_dynamics(const CompiledSystem& compiled, const std::vector<double>& parameters,
+                           const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
+  std::vector<double> inputs{0.0};
+  inputs.insert(inputs.end(), q.begin(), q.end());
+  inputs.insert(inputs.end(), qdot.begin(), qdot.end());
+  inputs.insert(inputs.end(), parameters.begin(), parameters.end());
+  const std::vector<double> out = compiled.dynamics().evaluate(inputs);
+  const auto n = q.size();
+  const Eigen::MatrixXd M =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          out.data(), n, n);
+  const Eigen::VectorXd f = Eigen::Map<const Eigen::VectorXd>(out.data() + n * n, n);
+  return {M, f, M.ldlt().solve(f)};
+}
+
+// The largest relative errors of M, f and q̈ of one evaluation against MuJoCo's.
+struct Errors {
+  double M = 0, f = 0, qddot = 0;
+  void add(const Dynamics& ours, const Dynamics& reference);
+};
+
 double relative(const Eigen::MatrixXd& value, const Eigen::MatrixXd& reference) {
   return (value - reference).norm() / reference.norm();
+}
+
+void Errors::add(const Dynamics& ours, const Dynamics& reference) {
+  M = std::max(M, relative(ours.M, reference.M));
+  f = std::max(f, relative(ours.f, reference.f));
+  qddot = std::max(qddot, relative(ours.qddot, reference.qddot));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Which of unidyn's evaluations a test compares with MuJoCo's.
+enum class Paths { recursive, both };
+
 // The model in both engines at 20 random states: the largest relative (Frobenius) errors of M, f
-// and q̈ stay within kTolerance. Prints them, and unidyn's times to load, derive and compile.
-void expect_agreement_with_mujoco(const std::string& file) {
+// and q̈ — of the recursive algorithms and, with Paths::both, of the compiled Lagrange's equations
+// — stay within kTolerance. Prints them, and unidyn's times to load, derive and compile.
+void expect_agreement_with_mujoco(const std::string& file, Paths paths = Paths::both) {
   Mujoco mj(formats_model(file));
   auto start = std::chrono::steady_clock::now();
   const commands::LoadedModel loaded = commands::load_named_model(formats_model(file));
@@ -149,39 +185,44 @@ void expect_agreement_with_mujoco(const std::string& file) {
   const double derive_time = seconds_since(start);
   start = std::chrono::steady_clock::now();
   const CompiledSystem compiled(loaded.system, equations);
+  if (paths == Paths::both) compiled.dynamics();
   const double compile_time = seconds_since(start);
   expect_plain_tree(mj, loaded.system);
   if (::testing::Test::HasFatalFailure()) return;
-
   CompiledSystemData data = compiled.make_data();
   const std::vector<double> parameters = initial_state(loaded.system, {}).parameters;
   test::Random random;
-  double M_error = 0, f_error = 0, qddot_error = 0;
+  Errors recursive, symbolic;
   for (int k = 0; k < 20; ++k) {
     Eigen::VectorXd q, qdot;
     random_state(mj, random, q, qdot);
     const Dynamics reference = mujoco_dynamics(mj, q, qdot);
-    const Dynamics ours = unidyn_dynamics(compiled, parameters, data, q, qdot);
-    M_error = std::max(M_error, relative(ours.M, reference.M));
-    f_error = std::max(f_error, relative(ours.f, reference.f));
-    qddot_error = std::max(qddot_error, relative(ours.qddot, reference.qddot));
+    recursive.add(unidyn_dynamics(compiled, parameters, data, q, qdot), reference);
+    if (paths == Paths::both) {
+      symbolic.add(symbolic_dynamics(compiled, parameters, q, qdot), reference);
+    }
   }
-  EXPECT_LT(M_error, kTolerance);
-  EXPECT_LT(f_error, kTolerance);
-  EXPECT_LT(qddot_error, kTolerance);
-  test::record("M_error", M_error);
-  test::record("f_error", f_error);
-  test::record("qddot_error", qddot_error);
+  for (const Errors* e : {&recursive, &symbolic}) {
+    EXPECT_LT(e->M, kTolerance) << (e == &symbolic ? "symbolic" : "recursive");
+    EXPECT_LT(e->f, kTolerance) << (e == &symbolic ? "symbolic" : "recursive");
+    EXPECT_LT(e->qddot, kTolerance) << (e == &symbolic ? "symbolic" : "recursive");
+  }
+  test::record("M_error", std::max(recursive.M, symbolic.M));
+  test::record("f_error", std::max(recursive.f, symbolic.f));
+  test::record("qddot_error", std::max(recursive.qddot, symbolic.qddot));
   std::printf(
-      "%s against MuJoCo %s: relative errors M %.3g, f %.3g, q'' %.3g; unidyn's load %.3f s, "
-      "derive %.3f s, compile %.3f s\n",
-      file.c_str(), mj_versionString(), M_error, f_error, qddot_error, load_time, derive_time,
-      compile_time);
+      "%s against MuJoCo %s: relative errors of the recursive algorithms M %.3g, f %.3g, q'' "
+      "%.3g; of the compiled equations M %.3g, f %.3g, q'' %.3g (0: not compared); unidyn's load "
+      "%.3f s, derive %.3f s, compile %.3f s\n",
+      file.c_str(), mj_versionString(), recursive.M, recursive.f, recursive.qddot, symbolic.M,
+      symbolic.f, symbolic.qddot, load_time, derive_time, compile_time);
 }
 
 #else
 
-void expect_agreement_with_mujoco(const std::string&) {
+enum class Paths { recursive, both };
+
+void expect_agreement_with_mujoco(const std::string&, Paths = Paths::both) {
   GTEST_SKIP() << "MuJoCo is not installed (scripts/setup.sh test installs libmujoco-dev)";
 }
 

@@ -287,8 +287,10 @@ TEST(UrdfImport, PendulumMassMatrixAndGravityMomentAgreeWithHandComputation) {
     const double M = a.dot(Q * J_link * Q.transpose() * a) + m * a.cross(r).squaredNorm();
     const double f = -m * g * Eigen::Vector3d::UnitZ().dot(a.cross(r));
     Eigen::VectorXd qddot, lambda;
-    compiled.solve(0, Eigen::VectorXd::Constant(1, q), Eigen::VectorXd::Constant(1, 0.7 - q),
-                   parameters, qddot, lambda, data);
+    const Eigen::VectorXd at = Eigen::VectorXd::Constant(1, q), rate = 0.7 - at.array();
+    compiled.solve(0, at, rate, parameters, qddot, lambda, data);
+    EXPECT_NEAR(qddot[0], f / M, 1e-12 * std::abs(f / M) + 1e-15) << "q = " << q;
+    compiled.mass_and_forcing(0, at, rate, parameters, data);
     EXPECT_NEAR(data.mass_matrix(0, 0), M, 1e-13 * M) << "q = " << q;
     EXPECT_NEAR(data.forcing(0), f, 1e-12 * m * g * r.norm()) << "q = " << q;
   }

@@ -114,6 +114,11 @@ struct ForceElement {
   bool potential_proven = false;
   std::vector<BodyForce> body_forces;
   std::vector<BodyMoment> moments;
+  // What a recursive evaluation of a tree needs (numeric/tree_dynamics.hpp): gravity's uniform
+  // field g; a torsion spring's or damper's angle (a coordinate) and a damper's coefficient c.
+  VectorExpr field;
+  std::optional<std::size_t> angle;
+  Expr coefficient = 0;
 };
 
 // Coulomb friction at a constraint's contact with particle or body `on` (equations/friction.hpp),

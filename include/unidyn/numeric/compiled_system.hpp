@@ -21,6 +21,7 @@
 #include "unidyn/numeric/inertia_assembly.hpp"
 #include "unidyn/numeric/native_code.hpp"
 #include "unidyn/numeric/tape.hpp"
+#include "unidyn/numeric/tree_evaluation.hpp"
 
 namespace unidyn {
 
@@ -81,6 +82,8 @@ struct CompiledSystemData {
   std::vector<FrictionPhase> friction_phase;
   std::vector<FrictionValues> friction;
   std::vector<Eigen::Vector3d> contact_force;
+  // the tree's numbers, when the recursive algorithms evaluate the dynamics
+  TreeEvaluationData tree;
 };
 
 // The equations are not finite at a state (M with a NaN or an ∞: outside the model's domain, a
@@ -105,6 +108,9 @@ struct CompileOptions {
   // the equations carry them (Kane's) and have at least this many coordinates; below it the
   // symbolic M, simplified, is cheaper (bench/: pendulum-N, heavy top).
   std::size_t assemble_from_coordinates = 10;
+  // A kinematic tree's q̈ by the articulated-body algorithm (numeric/tree_evaluation.hpp) rather
+  // than from the compiled M and f.
+  bool recursive_tree = true;
 };
 
 // Native code being compiled in the background (compiled_system.cpp).
@@ -129,6 +135,8 @@ class CompiledSystem {
   // (compiled in 0.41 s: PATH)", "native code (cached: PATH)" or "tape (native code failed: ...)".
   bool native() const { return native_ != nullptr; }
   std::string evaluation() const;
+  // How the tapes are evaluated (the evaluation() of a system that is not a tree).
+  std::string tape_evaluation() const;
   // The size of the compiled equations: tape instructions, and bytes of native source (0 without).
   std::size_t instruction_count() const;
   std::size_t native_source_bytes() const { return native_ ? native_->source_bytes() : 0; }
@@ -156,6 +164,10 @@ class CompiledSystem {
   const Tape& dynamics() const;
   // Whether M and c are summed from the partial velocities (CompileOptions).
   bool assembles_inertia() const { return assembly_ != nullptr; }
+  // Whether solve() takes a kinematic tree's q̈ from the articulated-body algorithm, and why not
+  // when the system is not such a tree.
+  bool recursive() const { return tree_.tree != nullptr; }
+  const std::string& why_not_recursive() const { return tree_.why_not; }
   const Tape& constraint_tape() const { return constraints_; }
 
   // The rough contacts' numbers at (t, q, q̇) into data.friction.
@@ -168,6 +180,11 @@ class CompiledSystem {
   // constraints are dependent (A M⁻¹ Aᵀ singular).
   void solve(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
              Eigen::VectorXd& qddot, Eigen::VectorXd& lambda, CompiledSystemData& data) const;
+
+  // M and f of M q̈ = f + Aᵀ λ at (t, q, q̇) into data.mass_matrix and data.forcing, which solve()
+  // leaves as they were when the articulated-body algorithm solved (recursive()).
+  void mass_and_forcing(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
+                        CompiledSystemData& data) const;
 
   // Fills data.constraint_matrix, constraint_velocity_term and constraint_position at (t, q, q̇).
   void constraints(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
@@ -196,6 +213,12 @@ class CompiledSystem {
   bool compile_in_background(const NativeOptions& native_options);
   void load_state(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
                   CompiledSystemData& data) const;
+  // M, f, A and b at the state from the dynamics tape (or its assembly) into data.
+  void evaluate_dynamics(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
+                         CompiledSystemData& data) const;
+  // solve() by the articulated-body algorithm (recursive()).
+  void solve_tree(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
+                  Eigen::VectorXd& qddot, Eigen::VectorXd& lambda, CompiledSystemData& data) const;
   // Evaluates a tape of inputs [t, q, q̇, p] at the state; returns its outputs (in data).
   const double* evaluate_at(const Tape& tape, double t, StateRef q, StateRef qdot,
                             std::span<const double> parameters, CompiledSystemData& data) const;
@@ -205,6 +228,8 @@ class CompiledSystem {
            CompiledSystemData& data) const;
 
   std::size_t n_ = 0, m_ = 0, p_ = 0;
+  // a kinematic tree's recursive dynamics; null: the compiled M and f
+  TreePlan tree_;
   // M and c from the partial velocities; null: M and f on the tape
   std::shared_ptr<const InertiaAssembly> assembly_;
   // [t, q, q̇, p] → M, f, A, b; or, with assembly_, → Φ − ∂U/∂q, the assembly's values, A, b

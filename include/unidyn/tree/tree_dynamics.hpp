@@ -1,0 +1,25 @@
+// The recursive dynamics of a kinematic tree (tree_model.hpp), M(q) q̈ = τ − b(q, q̇) with b the
+// Coriolis, centripetal and gravity forces — the book's Lagrange's equations (M q̈ = f, f = τ − b)
+// of the tree, computed without forming them (Featherstone 2008):
+//   articulated_body_accelerations  q̈ in O(n) (ABA, ch. 7);
+//   composite_inertia_mass_matrix   M in O(n d), d the tree's depth (CRBA, ch. 6);
+//   inverse_dynamics_bias           b = τ at q̈ = 0 (recursive Newton–Euler, ch. 5).
+#pragma once
+
+#include "unidyn/tree/tree_model.hpp"
+
+namespace unidyn::tree {
+
+// q̈ of the tree under the joint forces τ (one per coordinate).
+void articulated_body_accelerations(const TreeModel& model, TreeVector q, TreeVector qdot,
+                                    TreeVector tau, Eigen::VectorXd& qddot, TreeData& data);
+
+// M(q), n × n, both triangles.
+void composite_inertia_mass_matrix(const TreeModel& model, TreeVector q, Eigen::MatrixXd& M,
+                                   TreeData& data);
+
+// b(q, q̇): the joint forces that give q̈ = 0.
+void inverse_dynamics_bias(const TreeModel& model, TreeVector q, TreeVector qdot,
+                           Eigen::VectorXd& bias, TreeData& data);
+
+}  // namespace unidyn::tree

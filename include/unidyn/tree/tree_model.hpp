@@ -1,0 +1,91 @@
+// A kinematic tree in numbers, for the recursive algorithms (Featherstone 2008, ch. 4–7): an
+// immutable TreeModel — the links, each a body on a joint, parents before children — and a
+// mutable TreeData of one evaluation (as Pinocchio separates Model from Data).
+//
+// Link i's frame sits on its parent's frame (the ground's {O; E1, E2, E3} for a root) as the model
+// language's tree joints place it (model/tree_joint.hpp): the joint frame at the origin p and
+// turned by R0, then the joint's motion,
+//   E_i = R0 L(q, a)  (revolute, (6.8)) or R0 (prismatic, fixed);   r_i = p + R0 q a (prismatic) or
+//   p,
+// and the joint's twist is S q̇ with S = (a, 0) (revolute) or (0, a) (prismatic), a on the link's
+// basis (L(q, a) a = a). Gravity g enters as the ground's acceleration −g (the bodies then feel
+// m g at their centres).
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "unidyn/tree/spatial.hpp"
+
+namespace unidyn::tree {
+
+enum class JointKind { fixed, revolute, prismatic };
+
+struct TreeLink {
+  int parent = -1;  // an earlier link; −1: the ground
+  JointKind kind = JointKind::fixed;
+  int coordinate = -1;                               // the index of its q; −1 for a fixed joint
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();   // a, unit
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // p, on the parent's basis
+  Eigen::Matrix3d fixed_rotation = Eigen::Matrix3d::Identity();  // R0
+  Matrix6d inertia = Matrix6d::Zero();  // the body's, about the link's origin (rigid_body_inertia)
+};
+
+struct TreeModel {
+  std::vector<TreeLink> links;
+  std::size_t coordinates = 0;                        // n: every coordinate is one joint's
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // g, on the ground's basis
+};
+
+// One link's numbers during an evaluation.
+struct LinkData {
+  FramePlacement placement;               // E_i, r_i from the parent
+  Vector6d velocity, bias, acceleration;  // V_i; c_i = V_i × S q̇; the twist rate
+  Matrix6d articulated;                   // I^A_i (ABA) or the composite inertia I^c_i (CRBA)
+  Vector6d force;                // p^A_i (ABA) or the wrench of the inverse dynamics (RNEA)
+  Vector6d inertia_axis;         // U_i = I^A_i S (ABA)
+  double pivot = 0, torque = 0;  // D_i = Sᵀ U_i, u_i = τ_i − Sᵀ p^A_i (ABA)
+};
+
+// q, q̇, τ: a vector or a segment of one, taken without a copy.
+using TreeVector = Eigen::Ref<const Eigen::VectorXd>;
+
+struct TreeData {
+  std::vector<LinkData> links;
+  TreeData() = default;
+  explicit TreeData(const TreeModel& model) : links(model.links.size()) {}
+};
+
+// The twist S of a link's joint (zero for a fixed joint).
+inline Vector6d joint_axis(const TreeLink& link) {
+  Vector6d S = Vector6d::Zero();
+  if (link.kind == JointKind::revolute) S.head<3>() = link.axis;
+  if (link.kind == JointKind::prismatic) S.tail<3>() = link.axis;
+  return S;
+}
+
+// Each link's placement E_i, r_i at q.
+void tree_placements(const TreeModel& model, TreeVector q, TreeData& data);
+
+// The ground's acceleration, (0, −g): gravity as a fictitious lift of the whole tree.
+inline Vector6d ground_acceleration(const TreeModel& model) {
+  Vector6d a = Vector6d::Zero();
+  a.tail<3>() = -model.gravity;
+  return a;
+}
+
+// A_i = X_i A_parent + c_i (the ground's (0, −g) for a root): link i's acceleration while its own
+// joint does not accelerate.
+inline Vector6d carried_acceleration(const TreeModel& model, const TreeData& data, std::size_t i) {
+  const int parent = model.links[i].parent;
+  const LinkData& d = data.links[i];
+  const Vector6d A_parent = parent < 0 ? ground_acceleration(model)
+                                       : data.links[static_cast<std::size_t>(parent)].acceleration;
+  return twist_to_child(d.placement, A_parent) + d.bias;
+}
+
+// Pass 1 of every algorithm: each link's placement, twist V_i = X_i V_parent + S q̇ and bias
+// c_i = V_i × S q̇ at (q, q̇).
+void tree_kinematics(const TreeModel& model, TreeVector q, TreeVector qdot, TreeData& data);
+
+}  // namespace unidyn::tree

@@ -1,0 +1,227 @@
+// A system evaluated as a kinematic tree (include/unidyn/numeric/tree_evaluation.hpp).
+#include "unidyn/numeric/tree_evaluation.hpp"
+
+#include <cmath>
+
+#include "unidyn/numeric/compiled_system.hpp"
+#include "unidyn/symbolic/derivative.hpp"
+
+namespace unidyn {
+
+namespace {
+
+// The numbers the constants tape gives per link: m, c (3), J0 (9), p (3), R0 (9), a (3).
+constexpr std::size_t kLinkConstants = 28;
+
+// Why a body is not a link of a tree the recursive algorithms take ("" when it is).
+std::string why_not_link(const System& system, std::size_t b) {
+  const Body& body = system.bodies[b];
+  if (!body.joint) return "body '" + body.name + "' is not placed by a joint";
+  const TreeJoint& joint = *body.joint;
+  if (joint.parent && *joint.parent >= b) {
+    return "body '" + body.name + "' comes before its parent";
+  }
+  if (joint.kind != TreeJoint::Kind::fixed && joint.kind != TreeJoint::Kind::revolute &&
+      joint.kind != TreeJoint::Kind::prismatic) {
+    return "body '" + body.name + "' has a floating, ball or planar joint (not yet recursive)";
+  }
+  return "";
+}
+
+// The links' structure: parents, kinds and coordinates ("" in why_not when every body is one).
+tree::TreeModel tree_shape(const System& system, std::string& why_not) {
+  tree::TreeModel shape;
+  shape.coordinates = system.coordinates().size();
+  std::vector<int> owners(shape.coordinates, 0);
+  for (std::size_t b = 0; b < system.bodies.size() && why_not.empty(); ++b) {
+    why_not = why_not_link(system, b);
+    if (!why_not.empty()) break;
+    const TreeJoint& joint = *system.bodies[b].joint;
+    tree::TreeLink link;
+    link.parent = joint.parent ? static_cast<int>(*joint.parent) : -1;
+    link.kind = joint.kind == TreeJoint::Kind::revolute    ? tree::JointKind::revolute
+                : joint.kind == TreeJoint::Kind::prismatic ? tree::JointKind::prismatic
+                                                           : tree::JointKind::fixed;
+    if (link.kind != tree::JointKind::fixed) {
+      link.coordinate = static_cast<int>(joint.coordinates.front());
+      ++owners[joint.coordinates.front()];
+    }
+    shape.links.push_back(link);
+  }
+  for (std::size_t k = 0; k < owners.size() && why_not.empty(); ++k) {
+    if (owners[k] != 1) {
+      why_not = "coordinate '" + system.coordinates()[k].name + "' is not one joint's";
+    }
+  }
+  return shape;
+}
+
+// Per link m, Qᵀ (x̄ − o), J0, p, R0, a; then the sum of the gravity fields g.
+std::vector<Expr> link_constants(const System& system) {
+  std::vector<Expr> out;
+  VectorExpr g;
+  for (const ForceElement& f : system.forces) {
+    if (f.kind == ForceElement::Kind::gravity) g = g + f.field;
+  }
+  for (const Body& body : system.bodies) {
+    const TreeJoint& joint = *body.joint;
+    out.push_back(body.mass);
+    for (unsigned i = 0; i < 3; ++i) {
+      Expr c = 0;
+      for (unsigned k = 0; k < 3; ++k) {
+        c += body.rotation(k, i) *
+             (body.center[static_cast<int>(k)] - body.origin[static_cast<int>(k)]);
+      }
+      out.push_back(c);
+    }
+    for (unsigned i = 0; i < 9; ++i) out.push_back(body.inertia(i / 3, i % 3));
+    for (int i = 0; i < 3; ++i) out.push_back(joint.origin[i]);
+    for (unsigned i = 0; i < 9; ++i) out.push_back(joint.fixed_rotation(i / 3, i % 3));
+    for (int i = 0; i < 3; ++i) out.push_back(joint.axis[i]);
+  }
+  for (int i = 0; i < 3; ++i) out.push_back(g[i]);
+  return out;
+}
+
+// τ: −∂U/∂q of the potentials and torsion springs, −c q̇ of the torsion dampers ("" in why_not
+// when every force is one of these or gravity).
+std::vector<Expr> joint_forces(const System& system, std::string& why_not) {
+  const auto& q = system.coordinates();
+  std::vector<Expr> tau(q.size(), Expr(0));
+  for (const ForceElement& f : system.forces) {
+    using Kind = ForceElement::Kind;
+    if (f.kind == Kind::gravity) continue;
+    if (f.kind == Kind::potential || (f.kind == Kind::torsion_spring && f.angle)) {
+      for (std::size_t k = 0; k < q.size(); ++k) tau[k] -= derivative(f.potential, q[k].value);
+    } else if (f.kind == Kind::torsion_damper && f.angle) {
+      tau[*f.angle] -= f.coefficient * q[*f.angle].rate;
+    } else {
+      why_not =
+          "its force '" + f.label + "' (line " + std::to_string(f.where.line) + ") acts at points";
+      break;
+    }
+  }
+  return tau;
+}
+
+// Whether the constants are constant: the same at the start's zeros and at another state.
+bool constants_hold(const Tape& constants, const System& system, std::string& why_not) {
+  std::vector<double> zero(constants.input_count(), 0.0), other = zero;
+  const std::size_t n = system.coordinates().size();
+  for (std::size_t k = 0; k < 1 + 2 * n; ++k) other[k] = 0.37 + 0.11 * static_cast<double>(k);
+  for (std::size_t k = 0; k < system.parameters.size(); ++k) {
+    zero[1 + 2 * n + k] = other[1 + 2 * n + k] = system.parameters[k].value;
+  }
+  const std::vector<double> a = constants.evaluate(zero), moved = constants.evaluate(other);
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (!std::isfinite(a[k]) || std::abs(a[k] - moved[k]) > 1e-12 * (1 + std::abs(a[k]))) {
+      const std::size_t body = k / kLinkConstants;
+      why_not = body < system.bodies.size()
+                    ? "body '" + system.bodies[body].name + "' has a number that moves with q or t"
+                    : "gravity moves with q or t";
+      return false;
+    }
+  }
+  for (std::size_t b = 0; b < system.bodies.size(); ++b) {
+    const double* axis = a.data() + b * kLinkConstants + 25;
+    const double norm = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+    if (std::abs(norm - 1) > 1e-12) {
+      why_not = "the axis of body '" + system.bodies[b].name + "''s joint is not a unit vector";
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+TreePlan plan_tree(const System& system) {
+  TreePlan plan;
+  std::string& why_not = plan.why_not;
+  if (!system.particles.empty()) why_not = "it has particles";
+  if (!system.constraints.empty()) why_not = "it has constraints";
+  if (!system.impulses.empty()) why_not = "it applies impulses";
+  if (system.bodies.empty()) why_not = "it has no bodies";
+  if (!why_not.empty()) return plan;
+  tree::TreeModel shape = tree_shape(system, why_not);
+  if (!why_not.empty()) return plan;
+  const std::vector<Expr> tau = joint_forces(system, why_not);
+  if (!why_not.empty()) return plan;
+  const std::vector<Expr> inputs = tape_inputs(system, false);
+  Tape constants = Tape::compile(link_constants(system), inputs);
+  if (!constants_hold(constants, system, why_not)) return plan;
+  plan.tree = std::make_shared<const TreeEvaluation>(
+      std::move(shape), std::move(constants), Tape::compile(tau, inputs), system.parameters.size());
+  return plan;
+}
+
+TreeEvaluation::TreeEvaluation(tree::TreeModel shape, Tape constants, Tape joint_forces,
+                               std::size_t parameters)
+    : shape_(std::move(shape)),
+      constants_(std::move(constants)),
+      joint_forces_(std::move(joint_forces)),
+      p_(parameters) {}
+
+TreeEvaluationData TreeEvaluation::make_data() const {
+  TreeEvaluationData data;
+  data.model = shape_;
+  data.tree = tree::TreeData(shape_);
+  data.workspace.reserve(constants_);
+  data.workspace.reserve(joint_forces_);
+  data.inputs.assign(constants_.input_count(), 0.0);
+  data.outputs.resize(std::max(constants_.output_count(), joint_forces_.output_count()));
+  data.joint_forces.resize(static_cast<Eigen::Index>(shape_.coordinates));
+  return data;
+}
+
+void TreeEvaluation::prepare(double t, tree::TreeVector q, tree::TreeVector qdot,
+                             std::span<const double> parameters, TreeEvaluationData& data) const {
+  if (parameters.size() != p_) throw std::invalid_argument("wrong number of parameter values");
+  const std::size_t n = shape_.coordinates;
+  std::fill(data.inputs.begin(), data.inputs.end(), 0.0);
+  std::copy(parameters.begin(), parameters.end(),
+            data.inputs.begin() + 1 + 2 * static_cast<long>(n));
+  if (!data.evaluated || !std::equal(parameters.begin(), parameters.end(), data.parameters.begin(),
+                                     data.parameters.end())) {
+    constants_.evaluate(data.inputs, std::span(data.outputs.data(), constants_.output_count()),
+                        data.workspace);
+    const double* c = data.outputs.data();
+    for (tree::TreeLink& link : data.model.links) {
+      const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> J0(c + 4);
+      link.inertia = tree::rigid_body_inertia(c[0], Eigen::Vector3d(c[1], c[2], c[3]), J0);
+      link.origin = Eigen::Vector3d(c[13], c[14], c[15]);
+      link.fixed_rotation = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(c + 16);
+      link.axis = Eigen::Vector3d(c[25], c[26], c[27]);
+      c += kLinkConstants;
+    }
+    data.model.gravity = Eigen::Vector3d(c[0], c[1], c[2]);
+    data.parameters.assign(parameters.begin(), parameters.end());
+    data.evaluated = true;
+  }
+  data.inputs[0] = t;
+  for (std::size_t i = 0; i < n; ++i) {
+    data.inputs[1 + i] = q[static_cast<Eigen::Index>(i)];
+    data.inputs[1 + n + i] = qdot[static_cast<Eigen::Index>(i)];
+  }
+  joint_forces_.evaluate(data.inputs,
+                         std::span(data.joint_forces.data(), joint_forces_.output_count()),
+                         data.workspace);
+}
+
+void TreeEvaluation::accelerations(double t, tree::TreeVector q, tree::TreeVector qdot,
+                                   std::span<const double> parameters, Eigen::VectorXd& qddot,
+                                   TreeEvaluationData& data) const {
+  prepare(t, q, qdot, parameters, data);
+  tree::articulated_body_accelerations(data.model, q, qdot, data.joint_forces, qddot, data.tree);
+}
+
+void TreeEvaluation::mass_and_forcing(double t, tree::TreeVector q, tree::TreeVector qdot,
+                                      std::span<const double> parameters, Eigen::MatrixXd& M,
+                                      Eigen::VectorXd& f, TreeEvaluationData& data) const {
+  prepare(t, q, qdot, parameters, data);
+  tree::composite_inertia_mass_matrix(data.model, q, M, data.tree);
+  tree::inverse_dynamics_bias(data.model, q, qdot, data.bias, data.tree);
+  f = data.joint_forces - data.bias;
+}
+
+}  // namespace unidyn

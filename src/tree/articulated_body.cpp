@@ -1,0 +1,72 @@
+// The articulated-body algorithm (Featherstone 2008, §7.3): q̈ of a tree in three passes.
+//
+// Cut the tree at joint i: the links beyond it, free to move in their own joints, resist an
+// acceleration A of link i with the wrench I^A_i A + p^A_i — the articulated inertia and bias
+// force. Working inward from the leaves, a child passes on what its joint cannot transmit: with
+// U = I^A S, D = Sᵀ U and u = τ − Sᵀ p^A, its joint's q̈ = (u − Uᵀ A_parent') / D, so
+//   I^a = I^A − U Uᵀ / D,   p^a = p^A + I^a c + U u / D
+// are added, moved to the parent's frame, to the parent's I^A and p^A (which start as the body's
+// own I and V ×* I V). Working outward, each A_i = X_i A_parent + c_i gives q̈_i, and the link's
+// acceleration A_i + S q̈_i its children's. Gravity is the ground's acceleration (0, −g).
+#include <stdexcept>
+#include <string>
+
+#include "unidyn/tree/tree_dynamics.hpp"
+
+namespace unidyn::tree {
+
+namespace {
+
+// Pass 2, inward: I^A_i, p^A_i, U_i, D_i, u_i.
+void articulated_inertias(const TreeModel& model, TreeVector tau, TreeData& data) {
+  for (std::size_t k = model.links.size(); k-- > 0;) {
+    const TreeLink& link = model.links[k];
+    LinkData& d = data.links[k];
+    Matrix6d Ia = d.articulated;
+    Vector6d pa = d.force;
+    if (link.coordinate >= 0) {
+      const Vector6d S = joint_axis(link);
+      d.inertia_axis = Ia * S;
+      d.pivot = S.dot(d.inertia_axis);
+      d.torque = tau[link.coordinate] - S.dot(pa);
+      if (!(d.pivot > 0)) {
+        throw std::domain_error("the inertia beyond the joint of coordinate " +
+                                std::to_string(link.coordinate) +
+                                " about its axis is not positive");
+      }
+      Ia -= d.inertia_axis * d.inertia_axis.transpose() / d.pivot;
+      pa += Ia * d.bias + d.inertia_axis * (d.torque / d.pivot);
+    }
+    if (link.parent < 0) continue;
+    LinkData& parent = data.links[static_cast<std::size_t>(link.parent)];
+    parent.articulated += inertia_to_parent(d.placement, Ia);
+    parent.force += wrench_to_parent(d.placement, pa);
+  }
+}
+
+}  // namespace
+
+void articulated_body_accelerations(const TreeModel& model, TreeVector q, TreeVector qdot,
+                                    TreeVector tau, Eigen::VectorXd& qddot, TreeData& data) {
+  // pass 1: twists and biases; each link's own I and the bias wrench V ×* I V
+  tree_kinematics(model, q, qdot, data);
+  for (std::size_t i = 0; i < model.links.size(); ++i) {
+    LinkData& d = data.links[i];
+    d.articulated = model.links[i].inertia;
+    d.force = wrench_cross(d.velocity, d.articulated * d.velocity);
+  }
+  articulated_inertias(model, tau, data);
+  // pass 3, outward: A_i = X_i A_parent + c_i, q̈_i = (u_i − U_iᵀ A_i) / D_i, then + S q̈_i
+  qddot.resize(static_cast<Eigen::Index>(model.coordinates));
+  for (std::size_t i = 0; i < model.links.size(); ++i) {
+    const TreeLink& link = model.links[i];
+    LinkData& d = data.links[i];
+    d.acceleration = carried_acceleration(model, data, i);
+    if (link.coordinate < 0) continue;
+    const double acceleration = (d.torque - d.inertia_axis.dot(d.acceleration)) / d.pivot;
+    qddot[link.coordinate] = acceleration;
+    d.acceleration += joint_axis(link) * acceleration;
+  }
+}
+
+}  // namespace unidyn::tree
