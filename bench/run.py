@@ -610,16 +610,18 @@ print(json.dumps({{"loop": looped, "sweep": time.perf_counter() - start}}))
         self.say("## 10. Robots from URDF and MJCF files: the same file in unidyn and MuJoCo\n")
         self.say("Each file is read by both (unidyn imports it as tree joints; MuJoCo by "
                  "mj_loadXML, contacts off): derive and compile (unidyn: Kane's equations, the "
-                 "tape, then native code with an empty cache), one right-hand side at a random "
-                 "state (unidyn: the articulated-body algorithm over the tree; MuJoCo: "
-                 "mj_forward), and "
+                 "tape, then native code with an empty cache), the whole `unidyn simulate` "
+                 "process to its first row (with an empty cache; from 10 coordinates no "
+                 "equations are derived: the articulated-body algorithm), one right-hand side at "
+                 "a random state (unidyn: the compiled equations below 10 coordinates, the "
+                 "articulated-body algorithm over the tree from 10; MuJoCo: mj_forward), and "
                  "the largest relative difference of q̈ at 3 states. The n-link chains are URDF "
                  "files written here (links of 1 kg and 1 m about y). Goals of issue 38: the 7-DoF "
                  "arm ≤ 0.5 µs, chains ≥ 2× mj_forward at n = 20 and 50, derive + compile of the "
                  "arm ≤ 1 s, first right-hand side of the 50-chain ≤ 0.3 s.\n")
-        self.say("| file | n | derive | tape | native code | unidyn native | MuJoCo "
-                 "| MuJoCo / unidyn | max difference |")
-        self.say("|---|---|---|---|---|---|---|---|---|")
+        self.say("| file | n | derive | tape | native code | simulate, whole process | unidyn "
+                 "| MuJoCo | MuJoCo / unidyn | max difference |")
+        self.say("|---|---|---|---|---|---|---|---|---|---|")
         with tempfile.TemporaryDirectory() as scratch:
             files = [os.path.join(ROOT, "tests", "formats", "models", "iiwa-like-arm.urdf"),
                      os.path.join(ROOT, "examples", "mjcf", "acrobot.xml")]
@@ -639,9 +641,16 @@ print(json.dumps({{"loop": looped, "sweep": time.perf_counter() - start}}))
                     theirs, ns_mujoco = rhs_output(run([self.mujoco, "rhs", path], text))
                     cells = [f"{ns_mujoco:.0f} ns", f"{ns_mujoco / ns:.1f}×",
                              f"{max_relative_difference(ours, theirs):.1e}"]
+                # the whole `simulate` process to its first row, the native-code cache empty
+                cache = tempfile.mkdtemp(dir=scratch)
+                start = time.perf_counter()
+                run([self.unidyn, "simulate", path, "--t-end", "0.001", "-o",
+                     os.path.join(scratch, "run.csv")],
+                    env=dict(os.environ, UNIDYN_CACHE_DIR=cache))
+                started = time.perf_counter() - start
                 self.say(f"| {os.path.basename(path)} | {n} | {derived['derive_seconds']:.3f} s "
                          f"| {derived['tape_seconds']:.3f} s | {derived['native_seconds']:.2f} s "
-                         f"| {ns:.0f} ns | " + " | ".join(cells) + " |")
+                         f"| {started:.2f} s | {ns:.0f} ns | " + " | ".join(cells) + " |")
         self.say()
 
     # 5. Long runs ---------------------------------------------------------------------------------
@@ -743,6 +752,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("build")
     parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--part", help="run only this part (e.g. robots); RESULTS.md is not written")
     arguments = parser.parse_args()
     bench = Bench(arguments.build, arguments.quick)
     bench.say("# unidyn benchmarks\n")
@@ -753,6 +763,8 @@ def main():
     for part in (bench.derivation, bench.right_hand_side, bench.time_to_accuracy, bench.growth,
                  bench.long_runs, bench.large_systems, bench.analysis, bench.ensembles,
                  bench.robots, bench.micro):
+        if arguments.part and part.__name__ != arguments.part:
+            continue
         start = time.perf_counter()
         try:
             part()
@@ -761,7 +773,7 @@ def main():
             failed.append(part.__name__)
         print(f"bench: {part.__name__} took {time.perf_counter() - start:.1f} s", file=sys.stderr,
               flush=True)
-    if not arguments.quick:
+    if not arguments.quick and not arguments.part:
         with open(os.path.join(HERE, "RESULTS.md"), "w") as f:
             f.write("\n".join(bench.lines) + "\n")
     # a broken comparison fails the run (CI runs --quick), after every other part has run

@@ -134,8 +134,8 @@ int derive(const std::string& name, const std::map<std::string, std::string>& o)
 // (solve for q̈ from q, q̇) at the first state.
 int rhs(const std::string& name, const std::map<std::string, std::string>& o) {
   const bench::BenchModel model = bench::bench_model(name, UNIDYN_MODELS_DIR);
-  const CompiledSystem compiled(model.system, kane_equations(model.system),
-                                compile_options(option(o, "--evaluation", "native")));
+  // as `unidyn simulate` compiles it: Kane's equations, or a large tree's recursive dynamics
+  const CompiledSystem compiled(model.system, compile_options(option(o, "--evaluation", "native")));
   const SimulationStart initial = initial_state(model.system, {});
   CompiledSystemData data = compiled.make_data();
   // --state initial: the model's initial state instead (a model no peer has, the bicycle)
@@ -175,8 +175,8 @@ int rhs(const std::string& name, const std::map<std::string, std::string>& o) {
 // every output_step, the largest relative energy error and the final state (peer convention).
 int simulate_run(const std::string& name, const std::map<std::string, std::string>& o) {
   const bench::BenchModel model = bench::bench_model(name, UNIDYN_MODELS_DIR);
-  const CompiledSystem compiled(model.system, kane_equations(model.system),
-                                compile_options(option(o, "--evaluation", "native")));
+  // as `unidyn simulate` compiles it: Kane's equations, or a large tree's recursive dynamics
+  const CompiledSystem compiled(model.system, compile_options(option(o, "--evaluation", "native")));
   SimulationOptions options = simulation_options(model.system.simulate);
   options.t_end = std::stod(option(o, "--t-end", "100"));
   options.method = option(o, "--method", "dopri5");

@@ -65,11 +65,11 @@ CompiledSystem command_compiled(const ModelOptions& c, const LoadedModel& model,
   // (not their comments, initial: or simulate:), and how they were reduced
   compile_options.native_options.key =
       std::string(c.reduced ? "reduced\n" : "full\n") + model_code_text(model.text, model.path);
-  // the numerics take M and f through partial velocities: the same equations as Lagrange's
-  // (tested on every bundled model), derived faster and with fewer operations
-  const EquationsOfMotion equations = kane_equations(system);
-  end_phase("derive (kane)");
-  CompiledSystem compiled(system, equations, compile_options);
+  // the numerics take M and f through partial velocities (Kane's equations: the same as
+  // Lagrange's, tested on every bundled model, derived faster and with fewer operations), or a
+  // large kinematic tree's q̈ from the articulated-body algorithm, with no equations derived
+  compile_options.phase_ended = end_phase;
+  CompiledSystem compiled(system, compile_options);
   end_phase("build the evaluation");
   return compiled;
 }

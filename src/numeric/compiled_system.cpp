@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "unidyn/equations/friction.hpp"
+#include "unidyn/equations/kane.hpp"
 #include "unidyn/numeric/evaluation_form.hpp"
 #include "unidyn/numeric/ldlt.hpp"
 
@@ -68,6 +69,8 @@ Tape dynamics_tape(const System& system, const EquationsOfMotion& derived) {
 struct DeferredTape {
   std::vector<Expr> inputs;
   EquationsOfMotion equations;
+  // when set, the equations are derived from it (Kane's) at the first use
+  std::shared_ptr<const System> system;
   std::once_flag once;
   Tape tape;
 };
@@ -90,8 +93,9 @@ Tape compile_constraints(const System& system, const EquationsOfMotion& derived)
   return Tape::compile(outputs, tape_inputs(system, false));
 }
 
-Tape compile_observer(const System& system, const EquationsOfMotion& eq) {
-  std::vector<Expr> outputs{eq.kinetic_energy, eq.potential_energy};
+// T, U (0 without energies), the outputs, the conserved quantities, the stop_when expressions.
+Tape compile_observer(const System& system, const EquationsOfMotion& eq, bool energies) {
+  std::vector<Expr> outputs{energies ? eq.kinetic_energy : 0, energies ? eq.potential_energy : 0};
   for (const auto& o : system.outputs) outputs.push_back(o.expression);
   for (const auto& o : system.conserved) outputs.push_back(o.expression);
   for (const auto& o : system.stop_when) outputs.push_back(o.expression);
@@ -166,26 +170,51 @@ struct BackgroundCompilation {
 
 CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& equations,
                                const CompileOptions& options)
+    : CompiledSystem(system, &equations, options) {}
+
+CompiledSystem::CompiledSystem(const System& system, const CompileOptions& options)
+    : CompiledSystem(system, nullptr, options) {}
+
+CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion* given,
+                               const CompileOptions& options)
     : n_(system.coordinates().size()),
       m_(system.constraints.size()),
       p_(system.parameters.size()),
-      tree_(options.recursive_tree ? plan_tree(system) : TreePlan{nullptr, "not asked for"}),
-      assembly_(!tree_.tree && !equations.partial_velocity_terms.empty() &&
-                        n_ >= options.assemble_from_coordinates
-                    ? std::make_shared<const InertiaAssembly>(equations.partial_velocity_terms, n_)
-                    : nullptr),
-      // a tree's dynamics tape is compiled only when asked for (dynamics())
-      dynamics_(tree_.tree ? Tape()
-                : assembly_
-                    ? assembled_dynamics_tape(tape_inputs(system, false), equations, *assembly_)
-                    : dynamics_tape(system, equations)),
-      constraints_(compile_constraints(system, equations)),
-      observer_(compile_observer(system, equations)) {
-  if (assembly_ || tree_.tree) {
+      tree_(options.recursive_tree && n_ >= options.recursive_from_coordinates
+                ? plan_tree(system)
+                : TreePlan{nullptr, "fewer than " +
+                                        std::to_string(options.recursive_from_coordinates) +
+                                        " coordinates: the compiled equations are faster"}) {
+  if (!options.recursive_tree) tree_.why_not = "not asked for";
+  // a tree's dynamics tape is compiled only when asked for (dynamics()), from the equations given
+  // or, with none, Kane's derived then
+  if (tree_.tree) {
+    full_dynamics_ = std::make_shared<DeferredTape>();
+    full_dynamics_->inputs = tape_inputs(system, false);
+    if (given) full_dynamics_->equations = *given;
+    if (!given) full_dynamics_->system = std::make_shared<const System>(system);
+  }
+  // with no equations given, Kane's (what the numerics take: the same as Lagrange's, derived
+  // faster) unless the tree needs none
+  EquationsOfMotion derived;
+  if (!given && !tree_.tree) {
+    derived = kane_equations(system);
+    if (options.phase_ended) options.phase_ended("derive (kane)");
+  }
+  const EquationsOfMotion& equations = given ? *given : derived;
+  if (!tree_.tree && !equations.partial_velocity_terms.empty() &&
+      n_ >= options.assemble_from_coordinates) {
+    assembly_ = std::make_shared<const InertiaAssembly>(equations.partial_velocity_terms, n_);
     full_dynamics_ = std::make_shared<DeferredTape>();
     full_dynamics_->inputs = tape_inputs(system, false);
     full_dynamics_->equations = equations;
+    dynamics_ = assembled_dynamics_tape(tape_inputs(system, false), equations, *assembly_);
+  } else if (!tree_.tree) {
+    dynamics_ = dynamics_tape(system, equations);
   }
+  constraints_ = compile_constraints(system, equations);
+  // a tree's energies are its own (TreeEvaluation::energies): the tape computes the outputs
+  observer_ = compile_observer(system, equations, !tree_.tree);
   const std::vector<FrictionContact> contacts = friction_contacts(system);
   friction_ = compile_friction(system, contacts);
   for (const auto& c : contacts) {
@@ -201,6 +230,11 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion& eq
     redundant_coordinates_ = redundant_coordinates_ || c.parametrisation;
   }
   if (!options.native) return;
+  // a tree with no outputs leaves the tapes without an instruction: nothing to compile
+  if (instruction_count() == 0) {
+    evaluation_ = "tape (nothing to compile)";
+    return;
+  }
   // the four tapes as one library; the tape stays when it cannot be had
   NativeOptions native_options = options.native_options;
   native_options.only_cached = options.background;
@@ -269,8 +303,10 @@ std::string CompiledSystem::tape_evaluation() const {
 const Tape& CompiledSystem::dynamics() const {
   if (!full_dynamics_) return dynamics_;
   DeferredTape& deferred = *full_dynamics_;
-  std::call_once(deferred.once,
-                 [&] { deferred.tape = dynamics_tape(deferred.inputs, deferred.equations); });
+  std::call_once(deferred.once, [&] {
+    if (deferred.system) deferred.equations = kane_equations(*deferred.system);
+    deferred.tape = dynamics_tape(deferred.inputs, deferred.equations);
+  });
   return deferred.tape;
 }
 
@@ -535,6 +571,7 @@ void CompiledSystem::observe(double t, StateRef q, StateRef qdot, StateRef qddot
   for (Eigen::Index i = 0; i < lambda.size(); ++i) in[k++] = lambda[i];
   for (double p : parameters) in[k++] = p;
   run(observer_, std::span<const double>(in.data(), k), values, data);
+  if (tree_.tree) tree_.tree->energies(t, q, qdot, parameters, values[0], values[1], data.tree);
 }
 
 }  // namespace unidyn

@@ -150,16 +150,22 @@ TreePlan plan_tree(const System& system) {
   const std::vector<Expr> inputs = tape_inputs(system, false);
   Tape constants = Tape::compile(link_constants(system), inputs);
   if (!constants_hold(constants, system, why_not)) return plan;
+  Expr potential = 0;
+  for (const ForceElement& f : system.forces) {
+    if (f.kind != ForceElement::Kind::gravity) potential += f.potential;
+  }
   plan.tree = std::make_shared<const TreeEvaluation>(
-      std::move(shape), std::move(constants), Tape::compile(tau, inputs), system.parameters.size());
+      std::move(shape), std::move(constants), Tape::compile(tau, inputs),
+      Tape::compile(std::vector<Expr>{potential}, inputs), system.parameters.size());
   return plan;
 }
 
 TreeEvaluation::TreeEvaluation(tree::TreeModel shape, Tape constants, Tape joint_forces,
-                               std::size_t parameters)
+                               Tape potentials, std::size_t parameters)
     : shape_(std::move(shape)),
       constants_(std::move(constants)),
       joint_forces_(std::move(joint_forces)),
+      potentials_(std::move(potentials)),
       p_(parameters) {}
 
 TreeEvaluationData TreeEvaluation::make_data() const {
@@ -168,6 +174,7 @@ TreeEvaluationData TreeEvaluation::make_data() const {
   data.tree = tree::TreeData(shape_);
   data.workspace.reserve(constants_);
   data.workspace.reserve(joint_forces_);
+  data.workspace.reserve(potentials_);
   data.inputs.assign(constants_.input_count(), 0.0);
   data.outputs.resize(std::max(constants_.output_count(), joint_forces_.output_count()));
   data.joint_forces.resize(static_cast<Eigen::Index>(shape_.coordinates));
@@ -213,6 +220,16 @@ void TreeEvaluation::accelerations(double t, tree::TreeVector q, tree::TreeVecto
                                    TreeEvaluationData& data) const {
   prepare(t, q, qdot, parameters, data);
   tree::articulated_body_accelerations(data.model, q, qdot, data.joint_forces, qddot, data.tree);
+}
+
+void TreeEvaluation::energies(double t, tree::TreeVector q, tree::TreeVector qdot,
+                              std::span<const double> parameters, double& T, double& U,
+                              TreeEvaluationData& data) const {
+  prepare(t, q, qdot, parameters, data);
+  double other = 0;
+  potentials_.evaluate(data.inputs, std::span(&other, 1), data.workspace);
+  T = tree::tree_kinetic_energy(data.model, q, qdot, data.tree);
+  U = tree::tree_gravity_potential(data.model, q, data.tree) + other;
 }
 
 void TreeEvaluation::mass_and_forcing(double t, tree::TreeVector q, tree::TreeVector qdot,

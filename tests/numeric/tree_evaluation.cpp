@@ -50,9 +50,11 @@ forces:
   - potential: 40*slide^2/2
 )";
 
-CompileOptions symbolic_options() {
+// The recursive algorithms at every size (recursive), or the compiled equations.
+CompileOptions options(bool recursive) {
   CompileOptions options;
-  options.recursive_tree = false;
+  options.recursive_tree = recursive;
+  options.recursive_from_coordinates = 0;
   return options;
 }
 
@@ -63,8 +65,8 @@ struct Both {
   explicit Both(const std::string& text)
       : system(parse_model(text, "tree.yaml")),
         equations(lagrange_equations(system)),
-        recursive(system, equations),
-        compiled(system, equations, symbolic_options()) {}
+        recursive(system, equations, options(true)),
+        compiled(system, equations, options(false)) {}
 };
 
 // q̈, M and f at random states and two sets of parameters (the tree's numbers evaluated again when
@@ -92,17 +94,46 @@ TEST(TreeEvaluation, AgreesWithTheCompiledLagrangesEquations) {
       worst =
           std::max(worst, (data.mass_matrix - other.mass_matrix).norm() / other.mass_matrix.norm());
       worst = std::max(worst, (data.forcing - other.forcing).norm() / other.forcing.norm());
+      // T and U: the tree's own against the compiled equations' (from T's and U's expressions)
+      std::vector<double> energies(2), reference(2);
+      both.recursive.observe(0, q, qdot, ours, lambda, parameters, energies, data);
+      both.compiled.observe(0, q, qdot, theirs, lambda, parameters, reference, other);
+      for (int e = 0; e < 2; ++e) {
+        worst = std::max(worst, std::abs(energies[e] - reference[e]) / std::abs(reference[e]));
+      }
     }
   }
   test::record("relative_error", worst);
   EXPECT_LT(worst, 1e-12);
 }
 
+// Without equations given, a tree derives none until the dynamics tape is asked for; that tape is
+// then Kane's equations, the same M and f.
+TEST(TreeEvaluation, DerivesNoEquationsUntilAskedFor) {
+  const System system = parse_model(kTree, "tree.yaml");
+  const CompiledSystem lazy(system, options(true));
+  ASSERT_TRUE(lazy.recursive());
+  CompiledSystemData data = lazy.make_data();
+  const Eigen::VectorXd q = Eigen::Vector4d(0.3, -0.7, 1.1, 0.2),
+                        qdot = Eigen::Vector4d(1, 2, -1, 0.5);
+  const std::vector<double> parameters{1.4, 0.6, 3.0, 0.2, 9.81};
+  std::vector<double> inputs{0.0};
+  inputs.insert(inputs.end(), q.begin(), q.end());
+  inputs.insert(inputs.end(), qdot.begin(), qdot.end());
+  inputs.insert(inputs.end(), parameters.begin(), parameters.end());
+  const std::vector<double> tape = lazy.dynamics().evaluate(inputs);
+  lazy.mass_and_forcing(0, q, qdot, parameters, data);
+  const Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>> M(tape.data());
+  const Eigen::Map<const Eigen::Vector4d> f(tape.data() + 16);
+  EXPECT_LT((M - data.mass_matrix).norm(), 1e-13 * M.norm());
+  EXPECT_LT((f - data.forcing).norm(), 1e-13 * f.norm());
+}
+
 // What the recursive path does not take goes to the compiled equations, saying why.
 TEST(TreeEvaluation, OtherSystemsKeepTheCompiledEquationsWithTheReason) {
   const auto why_not = [](const std::string& text) {
     const System system = parse_model(text, "tree.yaml");
-    return CompiledSystem(system, lagrange_equations(system)).why_not_recursive();
+    return CompiledSystem(system, lagrange_equations(system), options(true)).why_not_recursive();
   };
   const std::string arm =
       "unidyn: 1\nname: arm\ncoordinates: [a]\nbodies:\n  link:\n"

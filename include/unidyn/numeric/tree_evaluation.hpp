@@ -44,7 +44,8 @@ TreePlan plan_tree(const System& system);
 
 class TreeEvaluation {
  public:
-  TreeEvaluation(tree::TreeModel shape, Tape constants, Tape joint_forces, std::size_t parameters);
+  TreeEvaluation(tree::TreeModel shape, Tape constants, Tape joint_forces, Tape potentials,
+                 std::size_t parameters);
 
   TreeEvaluationData make_data() const;
   // q̈ at (t, q, q̇); throws std::domain_error where the tree's inertia about a joint is not
@@ -52,6 +53,10 @@ class TreeEvaluation {
   void accelerations(double t, tree::TreeVector q, tree::TreeVector qdot,
                      std::span<const double> parameters, Eigen::VectorXd& qddot,
                      TreeEvaluationData& data) const;
+  // T and U: the tree's, gravity's and the potentials' in the coordinates and the torsion springs'.
+  void energies(double t, tree::TreeVector q, tree::TreeVector qdot,
+                std::span<const double> parameters, double& T, double& U,
+                TreeEvaluationData& data) const;
   // M and f of M q̈ = f: f = τ − b.
   void mass_and_forcing(double t, tree::TreeVector q, tree::TreeVector qdot,
                         std::span<const double> parameters, Eigen::MatrixXd& M, Eigen::VectorXd& f,
@@ -65,6 +70,7 @@ class TreeEvaluation {
   tree::TreeModel shape_;  // the links' parents, kinds and coordinates
   Tape constants_;     // [t, q, q̇, p] (at t, q, q̇ = 0) → per link m, c, J0, p, R0, a; then g
   Tape joint_forces_;  // [t, q, q̇, p] → τ
+  Tape potentials_;    // [t, q, q̇, p] → U of the forces other than gravity
   std::size_t p_ = 0;
 };
 

@@ -3,7 +3,8 @@
 // of the tree, computed without forming them (Featherstone 2008):
 //   articulated_body_accelerations  q̈ in O(n) (ABA, ch. 7);
 //   composite_inertia_mass_matrix   M in O(n d), d the tree's depth (CRBA, ch. 6);
-//   inverse_dynamics_bias           b = τ at q̈ = 0 (recursive Newton–Euler, ch. 5).
+//   inverse_dynamics_bias           b = τ at q̈ = 0 (recursive Newton–Euler, ch. 5);
+// and the energies T and gravity's U.
 #pragma once
 
 #include "unidyn/tree/tree_model.hpp"
@@ -21,5 +22,11 @@ void composite_inertia_mass_matrix(const TreeModel& model, TreeVector q, Eigen::
 // b(q, q̇): the joint forces that give q̈ = 0.
 void inverse_dynamics_bias(const TreeModel& model, TreeVector q, TreeVector qdot,
                            Eigen::VectorXd& bias, TreeData& data);
+
+// T = Σ ½ V_iᵀ I_i V_i.
+double tree_kinetic_energy(const TreeModel& model, TreeVector q, TreeVector qdot, TreeData& data);
+
+// Gravity's U = −Σ m g · x̄.
+double tree_gravity_potential(const TreeModel& model, TreeVector q, TreeData& data);
 
 }  // namespace unidyn::tree
