@@ -17,6 +17,15 @@ namespace unidyn::tree {
 
 namespace {
 
+// I S and Sᵀ w for S = (a, 0) or (0, a): half the products of the 6 × 6 forms.
+Vector6d inertia_along_joint(const TreeLink& link, const Matrix6d& I) {
+  return link.kind == JointKind::revolute ? Vector6d(I.leftCols<3>() * link.axis)
+                                          : Vector6d(I.rightCols<3>() * link.axis);
+}
+double along_joint(const TreeLink& link, const Vector6d& w) {
+  return link.kind == JointKind::revolute ? link.axis.dot(w.head<3>()) : link.axis.dot(w.tail<3>());
+}
+
 // Pass 2, inward: I^A_i, p^A_i, U_i, D_i, u_i.
 void articulated_inertias(const TreeModel& model, TreeVector tau, TreeData& data) {
   for (std::size_t k = model.links.size(); k-- > 0;) {
@@ -25,16 +34,15 @@ void articulated_inertias(const TreeModel& model, TreeVector tau, TreeData& data
     Matrix6d Ia = d.articulated;
     Vector6d pa = d.force;
     if (link.coordinate >= 0) {
-      const Vector6d S = joint_axis(link);
-      d.inertia_axis = Ia * S;
-      d.pivot = S.dot(d.inertia_axis);
-      d.torque = tau[link.coordinate] - S.dot(pa);
+      d.inertia_axis = inertia_along_joint(link, Ia);
+      d.pivot = along_joint(link, d.inertia_axis);
+      d.torque = tau[link.coordinate] - along_joint(link, pa);
       if (!(d.pivot > 0)) {
         throw std::domain_error("the inertia beyond the joint of coordinate " +
                                 std::to_string(link.coordinate) +
                                 " about its axis is not positive");
       }
-      Ia -= d.inertia_axis * d.inertia_axis.transpose() / d.pivot;
+      Ia.noalias() -= (d.inertia_axis / d.pivot) * d.inertia_axis.transpose();
       pa += Ia * d.bias + d.inertia_axis * (d.torque / d.pivot);
     }
     if (link.parent < 0) continue;
@@ -65,7 +73,8 @@ void articulated_body_accelerations(const TreeModel& model, TreeVector q, TreeVe
     if (link.coordinate < 0) continue;
     const double acceleration = (d.torque - d.inertia_axis.dot(d.acceleration)) / d.pivot;
     qddot[link.coordinate] = acceleration;
-    d.acceleration += joint_axis(link) * acceleration;
+    (link.kind == JointKind::revolute ? d.acceleration.head<3>() : d.acceleration.tail<3>()) +=
+        link.axis * acceleration;
   }
 }
 

@@ -114,7 +114,7 @@ struct CompileOptions {
   // than from the compiled M and f.
   bool recursive_tree = true;
   // ... from this many coordinates: below, the compiled equations are faster (bench/ part 10: the
-  // 7-DoF arm's 1.2 µs against the algorithm's 1.6 µs; a 20-link chain's 7.9 µs against 4.1 µs).
+  // 7-DoF arm's 1.2 µs against the algorithm's 1.6 µs; a 20-link chain's 7.9 µs against 3.8 µs).
   std::size_t recursive_from_coordinates = 10;
   // Told the name of each phase as it ends ("derive (kane)" when the equations are derived here).
   std::function<void(std::string_view)> phase_ended;
