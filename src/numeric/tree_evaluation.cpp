@@ -185,11 +185,12 @@ void TreeEvaluation::prepare(double t, tree::TreeVector q, tree::TreeVector qdot
                              std::span<const double> parameters, TreeEvaluationData& data) const {
   if (parameters.size() != p_) throw std::invalid_argument("wrong number of parameter values");
   const std::size_t n = shape_.coordinates;
-  std::fill(data.inputs.begin(), data.inputs.end(), 0.0);
-  std::copy(parameters.begin(), parameters.end(),
-            data.inputs.begin() + 1 + 2 * static_cast<long>(n));
+  // the numbers again only for new parameters (at t, q, q̇ = 0); the parameters stay in the inputs
   if (!data.evaluated || !std::equal(parameters.begin(), parameters.end(), data.parameters.begin(),
                                      data.parameters.end())) {
+    std::fill(data.inputs.begin(), data.inputs.end(), 0.0);
+    std::copy(parameters.begin(), parameters.end(),
+              data.inputs.begin() + 1 + 2 * static_cast<long>(n));
     constants_.evaluate(data.inputs, std::span(data.outputs.data(), constants_.output_count()),
                         data.workspace);
     const double* c = data.outputs.data();
