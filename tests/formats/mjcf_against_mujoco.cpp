@@ -39,9 +39,9 @@ TEST(MjcfAgainstMujoco, GeomInertiaMassMatrixBiasAndAccelerations) {
 
 #ifdef UNIDYN_HAVE_MUJOCO
 
-using mujoco_oracle::formats_model;
+using engine_oracle::formats_model;
+using engine_oracle::relative;
 using mujoco_oracle::Mujoco;
-using mujoco_oracle::relative;
 
 // MuJoCo's ball velocity, the angular velocity on the body frame, of the Euler parameters' rates
 // at a unit e: ω = 2 G(e) ė (the body-frame form of (6.36)'s kinematics).
