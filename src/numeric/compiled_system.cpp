@@ -200,6 +200,8 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion* gi
   if (!given && !tree_.tree) {
     derived = kane_equations(system);
     if (options.phase_ended) options.phase_ended("derive (kane)");
+  } else if (!given) {
+    constraint_rows(system, derived);  // a tree's (its Euler parameters' unit norms)
   }
   const EquationsOfMotion& equations = given ? *given : derived;
   if (!tree_.tree && !equations.partial_velocity_terms.empty() &&
@@ -417,13 +419,28 @@ void CompiledSystem::mass_and_forcing(double t, StateRef q, StateRef qdot,
     evaluate_dynamics(t, q, qdot, parameters, data);
     return;
   }
-  tree_.tree->mass_and_forcing(t, q, qdot, parameters, data.mass_matrix, data.forcing, data.tree);
+  if (tree_.tree->forms_mass_matrix()) {
+    tree_.tree->mass_and_forcing(t, q, qdot, parameters, data.mass_matrix, data.forcing, data.tree);
+    return;
+  }
+  // Euler parameters: M and f of the equations (derived at the first call)
+  const Tape& tape = dynamics();
+  load_state(t, q, qdot, parameters, data);
+  const std::vector<double> out =
+      tape.evaluate(std::span<const double>(data.inputs.data(), 1 + 2 * n_ + p_));
+  const auto N = static_cast<Eigen::Index>(n_);
+  data.mass_matrix =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          out.data(), N, N);
+  data.forcing = Eigen::Map<const Eigen::VectorXd>(out.data() + n_ * n_, N);
 }
 
 void CompiledSystem::solve_tree(double t, StateRef q, StateRef qdot,
                                 std::span<const double> parameters, Eigen::VectorXd& qddot,
                                 Eigen::VectorXd& lambda, CompiledSystemData& data) const {
-  lambda.resize(0);
+  // the only constraints a tree has are its Euler parameters' unit norms: their multipliers are 0
+  // (tree/euler_parameter_joint.hpp)
+  lambda.setZero(static_cast<Eigen::Index>(m_));
   try {
     tree_.tree->accelerations(t, q, qdot, parameters, qddot, data.tree);
   } catch (const std::domain_error& error) {

@@ -1,6 +1,7 @@
 // A system evaluated as a kinematic tree (include/unidyn/numeric/tree_evaluation.hpp).
 #include "unidyn/numeric/tree_evaluation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "unidyn/numeric/compiled_system.hpp"
@@ -21,11 +22,30 @@ std::string why_not_link(const System& system, std::size_t b) {
   if (joint.parent && *joint.parent >= b) {
     return "body '" + body.name + "' comes before its parent";
   }
-  if (joint.kind != TreeJoint::Kind::fixed && joint.kind != TreeJoint::Kind::revolute &&
-      joint.kind != TreeJoint::Kind::prismatic) {
-    return "body '" + body.name + "' has a floating, ball or planar joint (not yet recursive)";
+  if (joint.kind == TreeJoint::Kind::planar) {
+    return "body '" + body.name + "' has a planar joint (not yet recursive)";
+  }
+  for (std::size_t k = 1; k < joint.coordinates.size(); ++k) {
+    if (joint.coordinates[k] != joint.coordinates[0] + k) {
+      return "body '" + body.name + "''s joint coordinates are not consecutive";
+    }
   }
   return "";
+}
+
+tree::JointKind link_kind(TreeJoint::Kind kind) {
+  switch (kind) {
+    case TreeJoint::Kind::revolute:
+      return tree::JointKind::revolute;
+    case TreeJoint::Kind::prismatic:
+      return tree::JointKind::prismatic;
+    case TreeJoint::Kind::ball:
+      return tree::JointKind::ball;
+    case TreeJoint::Kind::floating:
+      return tree::JointKind::floating;
+    default:
+      return tree::JointKind::fixed;
+  }
 }
 
 // The links' structure: parents, kinds and coordinates ("" in why_not when every body is one).
@@ -39,12 +59,10 @@ tree::TreeModel tree_shape(const System& system, std::string& why_not) {
     const TreeJoint& joint = *system.bodies[b].joint;
     tree::TreeLink link;
     link.parent = joint.parent ? static_cast<int>(*joint.parent) : -1;
-    link.kind = joint.kind == TreeJoint::Kind::revolute    ? tree::JointKind::revolute
-                : joint.kind == TreeJoint::Kind::prismatic ? tree::JointKind::prismatic
-                                                           : tree::JointKind::fixed;
+    link.kind = link_kind(joint.kind);
     if (link.kind != tree::JointKind::fixed) {
       link.coordinate = static_cast<int>(joint.coordinates.front());
-      ++owners[joint.coordinates.front()];
+      for (const std::size_t k : joint.coordinates) ++owners[k];
     }
     shape.links.push_back(link);
   }
@@ -54,6 +72,32 @@ tree::TreeModel tree_shape(const System& system, std::string& why_not) {
     }
   }
   return shape;
+}
+
+// Whether every constraint is the unit norm e · e = 1 of a ball or floating joint's Euler
+// parameters ("" in why_not when so): a constraint of the description, whose multiplier is 0.
+bool only_unit_norms(const System& system, std::string& why_not) {
+  std::vector<Expr> norms;
+  for (const Body& body : system.bodies) {
+    const TreeJoint& joint = *body.joint;
+    if (joint.kind != TreeJoint::Kind::ball && joint.kind != TreeJoint::Kind::floating) continue;
+    Expr norm = -1;
+    for (auto k = joint.coordinates.end() - 4; k != joint.coordinates.end(); ++k) {
+      norm += GiNaC::pow(system.coordinates()[*k].value, 2);
+    }
+    norms.push_back(norm);
+  }
+  for (const Constraint& c : system.constraints) {
+    const bool unit =
+        c.parametrisation && std::any_of(norms.begin(), norms.end(), [&](const Expr& n) {
+          return (c.expression - n).expand().is_zero();
+        });
+    if (!unit) {
+      why_not = "it has the constraint '" + c.name + "'";
+      return false;
+    }
+  }
+  return true;
 }
 
 // Per link m, Qᵀ (x̄ − o), J0, p, R0, a; then the sum of the gravity fields g.
@@ -104,10 +148,44 @@ std::vector<Expr> joint_forces(const System& system, std::string& why_not) {
   return tau;
 }
 
+// The coordinates the constants are evaluated at: 0, but e0 = 1 of each ball or floating joint
+// (R(e) is not defined at e = 0).
+std::vector<double> reference_coordinates(const tree::TreeModel& shape) {
+  std::vector<double> q(shape.coordinates, 0.0);
+  for (const tree::TreeLink& link : shape.links) {
+    if (link.kind == tree::JointKind::ball) q[static_cast<std::size_t>(link.coordinate)] = 1;
+    if (link.kind == tree::JointKind::floating)
+      q[static_cast<std::size_t>(link.coordinate) + 3] = 1;
+  }
+  return q;
+}
+
+// Whether no force acts along a ball or floating joint's coordinates (the algorithm takes none
+// there) — "" in why_not when none does.
+bool no_forces_on_euler_joints(const tree::TreeModel& shape, const std::vector<Expr>& tau,
+                               const System& system, std::string& why_not) {
+  for (std::size_t b = 0; b < shape.links.size(); ++b) {
+    const tree::TreeLink& link = shape.links[b];
+    if (!tree::has_euler_parameters(link)) continue;
+    const std::size_t count = link.kind == tree::JointKind::ball ? 4 : 7;
+    for (std::size_t k = 0; k < count; ++k) {
+      if (!tau[static_cast<std::size_t>(link.coordinate) + k].is_zero()) {
+        why_not = "a force acts on the coordinates of body '" + system.bodies[b].name +
+                  "''s ball or floating joint";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 // Whether the constants are constant: the same at the start's zeros and at another state.
-bool constants_hold(const Tape& constants, const System& system, std::string& why_not) {
+bool constants_hold(const Tape& constants, const tree::TreeModel& shape, const System& system,
+                    std::string& why_not) {
   std::vector<double> zero(constants.input_count(), 0.0), other = zero;
   const std::size_t n = system.coordinates().size();
+  const std::vector<double> reference = reference_coordinates(shape);
+  std::copy(reference.begin(), reference.end(), zero.begin() + 1);
   for (std::size_t k = 0; k < 1 + 2 * n; ++k) other[k] = 0.37 + 0.11 * static_cast<double>(k);
   for (std::size_t k = 0; k < system.parameters.size(); ++k) {
     zero[1 + 2 * n + k] = other[1 + 2 * n + k] = system.parameters[k].value;
@@ -123,6 +201,7 @@ bool constants_hold(const Tape& constants, const System& system, std::string& wh
     }
   }
   for (std::size_t b = 0; b < system.bodies.size(); ++b) {
+    if (tree::has_euler_parameters(shape.links[b])) continue;  // no axis
     const double* axis = a.data() + b * kLinkConstants + 25;
     const double norm = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
     if (std::abs(norm - 1) > 1e-12) {
@@ -139,17 +218,16 @@ TreePlan plan_tree(const System& system) {
   TreePlan plan;
   std::string& why_not = plan.why_not;
   if (!system.particles.empty()) why_not = "it has particles";
-  if (!system.constraints.empty()) why_not = "it has constraints";
   if (!system.impulses.empty()) why_not = "it applies impulses";
   if (system.bodies.empty()) why_not = "it has no bodies";
   if (!why_not.empty()) return plan;
   tree::TreeModel shape = tree_shape(system, why_not);
-  if (!why_not.empty()) return plan;
+  if (!why_not.empty() || !only_unit_norms(system, why_not)) return plan;
   const std::vector<Expr> tau = joint_forces(system, why_not);
-  if (!why_not.empty()) return plan;
+  if (!why_not.empty() || !no_forces_on_euler_joints(shape, tau, system, why_not)) return plan;
   const std::vector<Expr> inputs = tape_inputs(system, false);
   Tape constants = Tape::compile(link_constants(system), inputs);
-  if (!constants_hold(constants, system, why_not)) return plan;
+  if (!constants_hold(constants, shape, system, why_not)) return plan;
   Expr potential = 0;
   for (const ForceElement& f : system.forces) {
     if (f.kind != ForceElement::Kind::gravity) potential += f.potential;
@@ -166,6 +244,7 @@ TreeEvaluation::TreeEvaluation(tree::TreeModel shape, Tape constants, Tape joint
       constants_(std::move(constants)),
       joint_forces_(std::move(joint_forces)),
       potentials_(std::move(potentials)),
+      reference_(reference_coordinates(shape_)),
       p_(parameters) {}
 
 TreeEvaluationData TreeEvaluation::make_data() const {
@@ -189,6 +268,7 @@ void TreeEvaluation::prepare(double t, tree::TreeVector q, tree::TreeVector qdot
   if (!data.evaluated || !std::equal(parameters.begin(), parameters.end(), data.parameters.begin(),
                                      data.parameters.end())) {
     std::fill(data.inputs.begin(), data.inputs.end(), 0.0);
+    std::copy(reference_.begin(), reference_.end(), data.inputs.begin() + 1);
     std::copy(parameters.begin(), parameters.end(),
               data.inputs.begin() + 1 + 2 * static_cast<long>(n));
     constants_.evaluate(data.inputs, std::span(data.outputs.data(), constants_.output_count()),
@@ -231,6 +311,10 @@ void TreeEvaluation::energies(double t, tree::TreeVector q, tree::TreeVector qdo
   potentials_.evaluate(data.inputs, std::span(&other, 1), data.workspace);
   T = tree::tree_kinetic_energy(data.model, q, qdot, data.tree);
   U = tree::tree_gravity_potential(data.model, q, data.tree) + other;
+}
+
+bool TreeEvaluation::forms_mass_matrix() const {
+  return !tree::has_euler_parameters(shape_);
 }
 
 void TreeEvaluation::mass_and_forcing(double t, tree::TreeVector q, tree::TreeVector qdot,

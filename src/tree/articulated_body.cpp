@@ -8,9 +8,14 @@
 // are added, moved to the parent's frame, to the parent's I^A and p^A (which start as the body's
 // own I and V ×* I V). Working outward, each A_i = X_i A_parent + c_i gives q̈_i, and the link's
 // acceleration A_i + S q̈_i its children's. Gravity is the ground's acceleration (0, −g).
+//
+// A ball or floating joint (S: the first 3 or all 6 components of the link's twist) does the same
+// with U = I^A S (6 × k), D = Sᵀ U (k × k), u = −Sᵀ p^A: ν̇ = D⁻¹ (u − Uᵀ A), I^a = I^A − U D⁻¹ Uᵀ,
+// p^a = p^A + I^a c + U D⁻¹ u (a floating joint passes nothing on: I^a = 0, p^a = 0).
 #include <stdexcept>
 #include <string>
 
+#include "unidyn/tree/euler_parameter_joint.hpp"
 #include "unidyn/tree/tree_dynamics.hpp"
 
 namespace unidyn::tree {
@@ -26,6 +31,33 @@ double along_joint(const TreeLink& link, const Vector6d& w) {
   return link.kind == JointKind::revolute ? link.axis.dot(w.head<3>()) : link.axis.dot(w.tail<3>());
 }
 
+// Pass 2 at a ball (k = 3) or floating (k = 6) joint: U, D⁻¹, u, and I^a, p^a in place.
+template <int k>
+void euler_joint_articulated(const LinkData& d, EulerJointData& joint, Matrix6d& Ia, Vector6d& pa) {
+  const Eigen::Matrix<double, 6, k> U = Ia.template leftCols<k>();
+  const Eigen::LLT<Eigen::Matrix<double, k, k>> D(Ia.template topLeftCorner<k, k>());
+  if (D.info() != Eigen::Success) {
+    throw std::domain_error("the inertia beyond a ball or floating joint is not positive definite");
+  }
+  const Eigen::Matrix<double, k, k> D_inverse = D.solve(Eigen::Matrix<double, k, k>::Identity());
+  joint.inertia_axes.template leftCols<k>() = U;
+  joint.inverse_pivot.template topLeftCorner<k, k>() = D_inverse;
+  joint.torque.template head<k>() = -pa.template head<k>();
+  Ia.noalias() -= U * D_inverse * U.transpose();
+  pa += Ia * d.bias + U * (D_inverse * joint.torque.template head<k>());
+}
+
+// Pass 3 at a ball or floating joint: ν̇ = D⁻¹ (u − Uᵀ A), A += S ν̇.
+template <int k>
+Vector6d euler_joint_rate_of_twist(const EulerJointData& joint, Vector6d& A) {
+  Vector6d rate = Vector6d::Zero();
+  rate.head<k>() =
+      joint.inverse_pivot.template topLeftCorner<k, k>() *
+      (joint.torque.template head<k>() - joint.inertia_axes.template leftCols<k>().transpose() * A);
+  A.head<k>() += rate.head<k>();
+  return rate;
+}
+
 // Pass 2, inward: I^A_i, p^A_i, U_i, D_i, u_i.
 void articulated_inertias(const TreeModel& model, TreeVector tau, TreeData& data) {
   for (std::size_t k = model.links.size(); k-- > 0;) {
@@ -33,7 +65,9 @@ void articulated_inertias(const TreeModel& model, TreeVector tau, TreeData& data
     LinkData& d = data.links[k];
     Matrix6d Ia = d.articulated;
     Vector6d pa = d.force;
-    if (link.coordinate >= 0) {
+    if (link.kind == JointKind::ball) euler_joint_articulated<3>(d, data.euler[k], Ia, pa);
+    if (link.kind == JointKind::floating) euler_joint_articulated<6>(d, data.euler[k], Ia, pa);
+    if (link.coordinate >= 0 && !has_euler_parameters(link)) {
       d.inertia_axis = inertia_along_joint(link, Ia);
       d.pivot = along_joint(link, d.inertia_axis);
       d.torque = tau[link.coordinate] - along_joint(link, pa);
@@ -70,6 +104,13 @@ void articulated_body_accelerations(const TreeModel& model, TreeVector q, TreeVe
     const TreeLink& link = model.links[i];
     LinkData& d = data.links[i];
     d.acceleration = carried_acceleration(model, data, i);
+    if (has_euler_parameters(link)) {
+      const Vector6d rate = link.kind == JointKind::ball
+                                ? euler_joint_rate_of_twist<3>(data.euler[i], d.acceleration)
+                                : euler_joint_rate_of_twist<6>(data.euler[i], d.acceleration);
+      euler_joint_accelerations(link, data.euler[i], rate, qddot);
+      continue;
+    }
     if (link.coordinate < 0) continue;
     const double acceleration = (d.torque - d.inertia_axis.dot(d.acceleration)) / d.pivot;
     qddot[link.coordinate] = acceleration;

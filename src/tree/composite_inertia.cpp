@@ -3,12 +3,17 @@
 // With I^c_i the inertia of link i and everything beyond it as one rigid body (each child's added,
 // moved to the parent's frame), the wrench F = I^c_i S_i that q̈_i = 1 needs is carried toward the
 // root, and each joint j it passes takes M_ji = S_jᵀ F: its share of moving the subtree of i.
+#include <stdexcept>
+
 #include "unidyn/tree/tree_dynamics.hpp"
 
 namespace unidyn::tree {
 
 void composite_inertia_mass_matrix(const TreeModel& model, TreeVector q, Eigen::MatrixXd& M,
                                    TreeData& data) {
+  if (has_euler_parameters(model)) {
+    throw std::invalid_argument("composite_inertia_mass_matrix: a ball or floating joint");
+  }
   tree_placements(model, q, data);
   // I^c_i = I_i + Σ_children X_cᵀ I^c_c X_c, from the leaves inward
   for (std::size_t i = 0; i < model.links.size(); ++i) {

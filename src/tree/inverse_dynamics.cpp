@@ -5,12 +5,17 @@
 // ground's (0, −g) brings gravity), and the wrench its motion needs, (8.x) the balance of
 // momentum and of angular momentum about its origin: W_i = I A_i + V_i ×* I V_i. Inward, each
 // link's joint transmits the wrench of it and all beyond it; the joint's share is b_i = S_iᵀ W_i.
+#include <stdexcept>
+
 #include "unidyn/tree/tree_dynamics.hpp"
 
 namespace unidyn::tree {
 
 void inverse_dynamics_bias(const TreeModel& model, TreeVector q, TreeVector qdot,
                            Eigen::VectorXd& bias, TreeData& data) {
+  if (has_euler_parameters(model)) {
+    throw std::invalid_argument("inverse_dynamics_bias: a ball or floating joint");
+  }
   tree_kinematics(model, q, qdot, data);
   for (std::size_t i = 0; i < model.links.size(); ++i) {
     const TreeLink& link = model.links[i];

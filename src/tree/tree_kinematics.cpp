@@ -1,8 +1,9 @@
 // Pass 1 of the recursive algorithms: placements, twists and velocity-product accelerations
 // (include/unidyn/tree/tree_model.hpp).
-#include "unidyn/tree/tree_model.hpp"
-
 #include <cmath>
+
+#include "unidyn/tree/euler_parameter_joint.hpp"
+#include "unidyn/tree/tree_model.hpp"
 
 namespace unidyn::tree {
 
@@ -27,18 +28,26 @@ FramePlacement placement(const TreeLink& link, double q) {
 void tree_placements(const TreeModel& model, TreeVector q, TreeData& data) {
   for (std::size_t i = 0; i < model.links.size(); ++i) {
     const TreeLink& link = model.links[i];
-    data.links[i].placement = placement(link, link.coordinate < 0 ? 0.0 : q[link.coordinate]);
+    data.links[i].placement = has_euler_parameters(link)
+                                  ? euler_joint_placement(link, q, data.euler[i])
+                                  : placement(link, link.coordinate < 0 ? 0.0 : q[link.coordinate]);
   }
 }
 
 void tree_kinematics(const TreeModel& model, TreeVector q, TreeVector qdot, TreeData& data) {
-  tree_placements(model, q, data);
   for (std::size_t i = 0; i < model.links.size(); ++i) {
     const TreeLink& link = model.links[i];
     LinkData& d = data.links[i];
-    const double rate = link.coordinate < 0 ? 0.0 : qdot[link.coordinate];
     // V_i = X_i V_parent + S q̇ (the ground is at rest), c_i = V_i × S q̇
-    const Vector6d joint_twist = joint_axis(link) * rate;
+    Vector6d joint_twist;
+    if (has_euler_parameters(link)) {
+      d.placement = euler_joint_kinematics(link, q, qdot, data.euler[i]);
+      joint_twist = data.euler[i].rate;
+    } else {
+      const bool moves = link.coordinate >= 0;
+      d.placement = placement(link, moves ? q[link.coordinate] : 0.0);
+      joint_twist = joint_axis(link) * (moves ? qdot[link.coordinate] : 0.0);
+    }
     d.velocity = joint_twist;
     if (link.parent >= 0) {
       d.velocity +=

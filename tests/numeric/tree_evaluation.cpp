@@ -1,8 +1,8 @@
 // A model of tree joints evaluated recursively (numeric/tree_evaluation.hpp) against the same
 // model's compiled Lagrange's equations (equations/lagrange.hpp: the book's (3.7) derived
 // symbolically, M and f on the tape), with parameters, a torsion spring and damper on joint angles,
-// a potential in the coordinates and a fixed joint; and the systems the recursive path refuses,
-// with the reason.
+// a potential in the coordinates and a fixed joint; ball and floating joints against Kane's
+// equations in Euler parameters; and the systems the recursive path refuses, with the reason.
 #include <gtest/gtest.h>
 
 #include "support/oracles.hpp"
@@ -129,11 +129,122 @@ TEST(TreeEvaluation, DerivesNoEquationsUntilAskedFor) {
   EXPECT_LT((f - data.forcing).norm(), 1e-13 * f.norm());
 }
 
+// A floating torso (seven coordinates: x, y, z and Euler parameters), a ball-jointed head with
+// its centre off the joint, a hinged arm on a turned bracket, and a torsion spring on the arm.
+const std::string kFloatingTree = R"(unidyn: 1
+name: floating
+parameters: {g: 9.81}
+coordinates: [x, y, z, e0, e1, e2, e3, b0, b1, b2, b3, arm]
+bodies:
+  torso:
+    joint: {floating: [x, y, z, e0, e1, e2, e3]}
+    mass: 5
+    inertia: {tensor: [[0.3, 0.01, 0], [0.01, 0.2, 0.02], [0, 0.02, 0.25]]}
+    center: torso.frame_point([0.05, -0.02, 0.1])
+  head:
+    joint: {parent: torso, origin: [0, 0, 0.4], rpy: [pi/2, 0, 0], ball: [b0, b1, b2, b3]}
+    mass: 1.2
+    inertia: [0.01, 0.012, 0.008]
+    center: head.frame_point([0.02, 0.01, 0.12])
+  bracket:
+    joint: {parent: torso, origin: [0.1, 0.2, 0.3], rpy: [0, 0, pi/2]}
+    mass: 0.2
+    inertia: [0.001, 0.001, 0.001]
+  limb:
+    joint: {parent: bracket, origin: [0, 0.05, 0], revolute: arm, axis: [0, 1, 0]}
+    mass: 0.7
+    inertia: [0.02, 0.02, 0.002]
+    center: limb.frame_point([0, 0, -0.25])
+forces:
+  - gravity: -g*E3
+  - torsion_spring: {angle: arm, stiffness: 4, rest_angle: 0.3}
+)";
+
+// The floating tree by the recursive algorithms and by Kane's equations (derived once).
+struct FloatingTree {
+  System system = parse_model(kFloatingTree, "floating.yaml");
+  CompiledSystem recursive{system, options(true)}, compiled{system, options(false)};
+};
+const FloatingTree& floating_tree() {
+  static const FloatingTree tree;
+  return tree;
+}
+
+// A unit e and a rate ė with e · ė = 0, at random.
+void random_euler_parameters(test::Random& random, Eigen::Ref<Eigen::VectorXd> e,
+                             Eigen::Ref<Eigen::VectorXd> edot) {
+  for (int i = 0; i < 4; ++i) {
+    e[i] = random.uniform(-1, 1);
+    edot[i] = random.uniform(-1, 1);
+  }
+  e.normalize();
+  edot -= e.dot(edot) * e;
+}
+
+// Ball and floating joints: q̈ of the articulated-body algorithm over the links' twists equals
+// that of Kane's equations derived symbolically in the Euler parameters (M semi-definite, solved
+// with their unit norms), at random states on the constraints; the norms' multipliers are 0 in
+// both; T and U agree.
+TEST(TreeEvaluation, BallAndFloatingJointsAgreeWithKanesEquations) {
+  const CompiledSystem& recursive = floating_tree().recursive;
+  const CompiledSystem& compiled = floating_tree().compiled;
+  ASSERT_TRUE(recursive.recursive()) << recursive.why_not_recursive();
+  ASSERT_EQ(recursive.constraint_count(), 2u);
+  CompiledSystemData data = recursive.make_data(), other = compiled.make_data();
+  const std::vector<double> parameters{9.81};
+  test::Random random;
+  double worst = 0, lambda_compiled = 0;
+  for (int k = 0; k < 10; ++k) {
+    Eigen::VectorXd q(12), qdot(12), ours, theirs, lambda, lambda_reference;
+    for (int i = 0; i < 12; ++i) {
+      q[i] = random.uniform(-1, 1);
+      qdot[i] = random.uniform(-2, 2);
+    }
+    random_euler_parameters(random, q.segment(3, 4), qdot.segment(3, 4));
+    random_euler_parameters(random, q.segment(7, 4), qdot.segment(7, 4));
+    recursive.solve(0, q, qdot, parameters, ours, lambda, data);
+    compiled.solve(0, q, qdot, parameters, theirs, lambda_reference, other);
+    worst = std::max(worst, (ours - theirs).norm() / theirs.norm());
+    EXPECT_EQ(lambda, Eigen::VectorXd::Zero(2));
+    lambda_compiled = std::max(lambda_compiled, lambda_reference.cwiseAbs().maxCoeff());
+    std::vector<double> energies(2), reference(2);
+    recursive.observe(0, q, qdot, ours, lambda, parameters, energies, data);
+    compiled.observe(0, q, qdot, theirs, lambda_reference, parameters, reference, other);
+    for (int e = 0; e < 2; ++e) {
+      worst = std::max(worst, std::abs(energies[e] - reference[e]) / std::abs(reference[e]));
+    }
+  }
+  test::record("relative_error", worst);
+  std::printf(
+      "recursive against Kane's equations: relative error %.3g; compiled |lambda| <= %.3g\n", worst,
+      lambda_compiled);
+  EXPECT_LT(worst, 1e-11);
+  EXPECT_LT(lambda_compiled, 1e-10);
+}
+
+// Off the constraints (|e| ≠ 1, e · ė ≠ 0) the rotation sees only e / |e|: the recursive q̈
+// keeps the constraints' second derivative e · ë + ė · ė = 0, as the compiled solve does.
+TEST(TreeEvaluation, EulerParametersOffTheUnitSphereKeepTheConstraintsRate) {
+  const CompiledSystem& recursive = floating_tree().recursive;
+  const CompiledSystem& compiled = floating_tree().compiled;
+  CompiledSystemData data = recursive.make_data(), other = compiled.make_data();
+  Eigen::VectorXd q(12), qdot(12), ours, theirs, lambda;
+  q << 0.1, 0.2, 0.3, 0.9, 0.2, -0.3, 0.4, 1.1, 0.1, 0.2, -0.1, 0.5;
+  qdot << 1, -1, 0.5, 0.3, 0.2, 0.1, -0.4, 0.2, 0.5, -0.3, 0.1, 1.5;
+  const std::vector<double> parameters{9.81};
+  recursive.solve(0, q, qdot, parameters, ours, lambda, data);
+  compiled.solve(0, q, qdot, parameters, theirs, lambda, other);
+  for (const Eigen::Index a : {3, 7}) {
+    EXPECT_NEAR(q.segment(a, 4).dot(ours.segment(a, 4)) + qdot.segment(a, 4).squaredNorm(), 0,
+                1e-13);
+  }
+  EXPECT_LT((ours - theirs).norm(), 1e-10 * theirs.norm());
+}
+
 // What the recursive path does not take goes to the compiled equations, saying why.
 TEST(TreeEvaluation, OtherSystemsKeepTheCompiledEquationsWithTheReason) {
   const auto why_not = [](const std::string& text) {
-    const System system = parse_model(text, "tree.yaml");
-    return CompiledSystem(system, lagrange_equations(system), options(true)).why_not_recursive();
+    return plan_tree(parse_model(text, "tree.yaml")).why_not;
   };
   const std::string arm =
       "unidyn: 1\nname: arm\ncoordinates: [a]\nbodies:\n  link:\n"
@@ -148,6 +259,10 @@ TEST(TreeEvaluation, OtherSystemsKeepTheCompiledEquationsWithTheReason) {
           "unidyn: 1\nname: top\ncoordinates: [a]\nbodies:\n  b:\n    mass: 1\n"
           "    inertia: [1, 1, 2]\n    rotation: {axis: E3, angle: a}\n    center: [0, 0, 0]\n"),
       "body 'b' is not placed by a joint");
+  EXPECT_EQ(why_not(kFloatingTree + "  - potential: 3*e1^2\n"),
+            "a force acts on the coordinates of body 'torso''s ball or floating joint");
+  EXPECT_EQ(why_not(kFloatingTree + "constraints:\n  - {name: level, position: arm - 0.1}\n"),
+            "it has the constraint 'level'");
 }
 
 }  // namespace

@@ -37,9 +37,11 @@ struct TreePlan {
   std::string why_not;
 };
 
-// The system as a tree when it is one: every body on a fixed, revolute or prismatic joint, every
-// coordinate one joint's, no particles, constraints or impulses, and no force but gravity,
-// potentials in the coordinates and torsion springs and dampers on joint angles.
+// The system as a tree when it is one: every body on a fixed, revolute, prismatic, ball or
+// floating joint, every coordinate one joint's, no particles or impulses, no constraint but the
+// Euler parameters' unit norms (their multipliers are 0: tree/euler_parameter_joint.hpp), and no
+// force but gravity, potentials in the one-coordinate joints' coordinates and torsion springs and
+// dampers on joint angles.
 TreePlan plan_tree(const System& system);
 
 class TreeEvaluation {
@@ -57,6 +59,9 @@ class TreeEvaluation {
   void energies(double t, tree::TreeVector q, tree::TreeVector qdot,
                 std::span<const double> parameters, double& T, double& U,
                 TreeEvaluationData& data) const;
+  // Whether mass_and_forcing() is defined: not for a ball or floating joint (the model
+  // language's M in Euler parameters is not the tree's; CompiledSystem takes the equations).
+  bool forms_mass_matrix() const;
   // M and f of M q̈ = f: f = τ − b.
   void mass_and_forcing(double t, tree::TreeVector q, tree::TreeVector qdot,
                         std::span<const double> parameters, Eigen::MatrixXd& M, Eigen::VectorXd& f,
@@ -71,6 +76,7 @@ class TreeEvaluation {
   Tape constants_;     // [t, q, q̇, p] (at t, q, q̇ = 0) → per link m, c, J0, p, R0, a; then g
   Tape joint_forces_;  // [t, q, q̇, p] → τ
   Tape potentials_;    // [t, q, q̇, p] → U of the forces other than gravity
+  std::vector<double> reference_;  // q of the constants: 0, e0 = 1
   std::size_t p_ = 0;
 };
 

@@ -15,11 +15,12 @@ namespace unidyn::tree {
 void articulated_body_accelerations(const TreeModel& model, TreeVector q, TreeVector qdot,
                                     TreeVector tau, Eigen::VectorXd& qddot, TreeData& data);
 
-// M(q), n × n, both triangles.
+// M(q), n × n, both triangles. One-coordinate joints only (std::invalid_argument for a ball or
+// floating joint: the model language's M in Euler parameters is not the tree's).
 void composite_inertia_mass_matrix(const TreeModel& model, TreeVector q, Eigen::MatrixXd& M,
                                    TreeData& data);
 
-// b(q, q̇): the joint forces that give q̈ = 0.
+// b(q, q̇): the joint forces that give q̈ = 0. One-coordinate joints only, as M.
 void inverse_dynamics_bias(const TreeModel& model, TreeVector q, TreeVector qdot,
                            Eigen::VectorXd& bias, TreeData& data);
 

@@ -10,6 +10,12 @@
 // and the joint's twist is S q̇ with S = (a, 0) (revolute) or (0, a) (prismatic), a on the link's
 // basis (L(q, a) a = a). Gravity g enters as the ground's acceleration −g (the bodies then feel
 // m g at their centres).
+//
+// A ball joint turns the link by the Euler parameters e = (e0, e1, e2, e3) of its four
+// coordinates, E_i = R0 R(e) ((6.36)), and a floating joint also moves it by d = (x, y, z) on the
+// joint frame (seven coordinates x, y, z, e0..e3), r_i = p + R0 d. Their twists are the link's own
+// angular velocity ω and (floating) the velocity v of its origin, on its basis: S selects the
+// first three or all six components of (ω, v) (euler_parameter_joint.hpp maps q̇ to them).
 #pragma once
 
 #include <Eigen/Dense>
@@ -19,14 +25,14 @@
 
 namespace unidyn::tree {
 
-enum class JointKind { fixed, revolute, prismatic };
+enum class JointKind { fixed, revolute, prismatic, ball, floating };
 
 struct TreeLink {
   int parent = -1;  // an earlier link; −1: the ground
   JointKind kind = JointKind::fixed;
-  int coordinate = -1;                               // the index of its q; −1 for a fixed joint
-  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();   // a, unit
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // p, on the parent's basis
+  int coordinate = -1;  // the index of its (first) q; −1 for a fixed joint
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();               // a, unit
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();              // p, on the parent's basis
   Eigen::Matrix3d fixed_rotation = Eigen::Matrix3d::Identity();  // R0
   Matrix6d inertia = Matrix6d::Zero();  // the body's, about the link's origin (rigid_body_inertia)
 };
@@ -50,13 +56,45 @@ struct LinkData {
 // q, q̇, τ: a vector or a segment of one, taken without a copy.
 using TreeVector = Eigen::Ref<const Eigen::VectorXd>;
 
-struct TreeData {
-  std::vector<LinkData> links;
-  TreeData() = default;
-  explicit TreeData(const TreeModel& model) : links(model.links.size()) {}
+// A ball or floating joint's numbers during an evaluation (euler_parameter_joint.hpp).
+struct EulerJointData {
+  // the Euler parameters as the unit ê = e / s, s = |e|, and the rates ṡ, ê̇
+  Eigen::Vector4d unit = Eigen::Vector4d::UnitX(), unit_rate = Eigen::Vector4d::Zero();
+  double norm = 1, norm_rate = 0;
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // R(ê)
+  Vector6d rate = Vector6d::Zero();  // the joint's twist ν = (ω, v) on the link's basis
+  // ABA: U = I^A S, D⁻¹ = (Sᵀ I^A S)⁻¹ and u = −Sᵀ p^A (k = 3 or 6 of the 6 rows)
+  Matrix6d inertia_axes = Matrix6d::Zero(), inverse_pivot = Matrix6d::Zero();
+  Vector6d torque = Vector6d::Zero();
 };
 
-// The twist S of a link's joint (zero for a fixed joint).
+struct TreeData {
+  std::vector<LinkData> links;
+  std::vector<EulerJointData> euler;  // per link; empty when no link has a ball or floating joint
+  TreeData() = default;
+  explicit TreeData(const TreeModel& model) : links(model.links.size()) {
+    for (const TreeLink& link : model.links) {
+      if (link.kind == JointKind::ball || link.kind == JointKind::floating) {
+        euler.resize(model.links.size());
+      }
+    }
+  }
+};
+
+// Whether the link's joint is a ball or floating joint (several twist components).
+inline bool has_euler_parameters(const TreeLink& link) {
+  return link.kind == JointKind::ball || link.kind == JointKind::floating;
+}
+
+// Whether any link has a ball or floating joint.
+inline bool has_euler_parameters(const TreeModel& model) {
+  for (const TreeLink& link : model.links) {
+    if (has_euler_parameters(link)) return true;
+  }
+  return false;
+}
+
+// The twist S of a link's one-coordinate joint (zero for a fixed joint).
 inline Vector6d joint_axis(const TreeLink& link) {
   Vector6d S = Vector6d::Zero();
   if (link.kind == JointKind::revolute) S.head<3>() = link.axis;
