@@ -2,6 +2,7 @@
 #include "unidyn/model/system.hpp"
 
 #include "unidyn/symbolic/printing.hpp"
+#include "unidyn/symbolic/rotation_expr.hpp"
 
 namespace unidyn {
 namespace {
@@ -12,6 +13,34 @@ std::optional<std::size_t> find_by_name(const std::vector<T>& items, const std::
     if (items[i].name == wanted) return i;
   }
   return std::nullopt;
+}
+
+// The angular velocity of a joint's motion on its joint frame: a q̇ (revolute; planar, about a),
+// 0 (fixed, prismatic), or for Euler parameters ((6.36), R(e) of e / |e|)
+// 2 (e0 ė − ė0 e + e × ė) / (e0² + e · e).
+VectorExpr joint_motion_rate(const TreeJoint& joint, const std::vector<CoordinateSymbols>& q) {
+  using Kind = TreeJoint::Kind;
+  if (joint.kind == Kind::revolute) return joint.axis * q[joint.coordinates[0]].rate;
+  if (joint.kind == Kind::planar) return joint.axis * q[joint.coordinates[2]].rate;
+  if (joint.kind != Kind::ball && joint.kind != Kind::floating) return VectorExpr();
+  const std::size_t first = joint.kind == Kind::floating ? 3 : 0;
+  const auto& c = joint.coordinates;
+  const Expr e0 = q[c[first]].value, e0_rate = q[c[first]].rate;
+  const VectorExpr e(q[c[first + 1]].value, q[c[first + 2]].value, q[c[first + 3]].value);
+  const VectorExpr e_rate(q[c[first + 1]].rate, q[c[first + 2]].rate, q[c[first + 3]].rate);
+  return (2 / (e0 * e0 + dot(e, e))) * (e0 * e_rate - e0_rate * e + cross(e, e_rate));
+}
+
+// Whether a body moves with Euler parameters: on a ball or floating joint, or below one.
+std::vector<bool> below_euler_parameters(const System& system) {
+  std::vector<bool> below(system.bodies.size(), false);
+  for (std::size_t b = 0; b < system.bodies.size(); ++b) {
+    const std::optional<TreeJoint>& joint = system.bodies[b].joint;
+    if (!joint) continue;
+    below[b] = joint->kind == TreeJoint::Kind::ball || joint->kind == TreeJoint::Kind::floating ||
+               (joint->parent && *joint->parent < b && below[*joint->parent]);
+  }
+  return below;
 }
 
 }  // namespace
@@ -92,14 +121,27 @@ VectorExpr System::axial_rate(std::size_t b) const {
 }
 
 void System::make_angular_velocities() const {
+  // a body that moves with Euler parameters takes ω by the tree (below); the others
+  // axial(Q̇ Qᵀ), simplified, all at once
+  const std::vector<bool> below = below_euler_parameters(*this);
   std::vector<Expr> components;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
-    const VectorExpr omega = axial_rate(b);
+    const VectorExpr omega = below[b] ? VectorExpr() : axial_rate(b);
     components.insert(components.end(), omega.c.begin(), omega.c.end());
   }
   const std::vector<Expr> simple = simplify_all(components);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
-    const VectorExpr omega{simple[3 * b], simple[3 * b + 1], simple[3 * b + 2]};
+    VectorExpr omega{simple[3 * b], simple[3 * b + 1], simple[3 * b + 2]};
+    // ω = ω_parent + Q_parent R0 ω_joint, the same as axial(Q̇ Qᵀ), whose expansion grows with
+    // every joint above the body (a humanoid's hand did not finish in 10 minutes)
+    if (below[b]) {
+      const TreeJoint& joint = *bodies[b].joint;
+      const TensorExpr frame = joint.parent
+                                   ? bodies[*joint.parent].rotation.mul(joint.fixed_rotation)
+                                   : joint.fixed_rotation;
+      omega = times(frame, joint_motion_rate(joint, coordinates()));
+      if (joint.parent) omega = angular_velocity_cache_.at(*joint.parent).second + omega;
+    }
     angular_velocity_cache_.insert_or_assign(b, std::make_pair(bodies[b].rotation, omega));
   }
 }

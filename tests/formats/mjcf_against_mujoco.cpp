@@ -212,6 +212,12 @@ TEST(MjcfAgainstMujoco, FloatingQuadrupedAccelerationsByTheRecursiveAlgorithm) {
   expect_euler_parameter_tree_agrees("floating-quadruped.xml");
 }
 
+// A humanoid-sized floating tree: 36 coordinates, 35 velocities, several hinges in one body (its
+// bodies' ω by the tree: System::make_angular_velocities).
+TEST(MjcfAgainstMujoco, FloatingHumanoidAccelerationsByTheRecursiveAlgorithm) {
+  expect_euler_parameter_tree_agrees("humanoid.xml");
+}
+
 // The whole run — simulate's dopri5 at rtol 1e-10 over the recursive algorithms, the unit norm
 // kept by projection — against MuJoCo's own RK4 at a step of 1e-4 s, from the file's pose with
 // every velocity moving, over 0.5 s: every coordinate agrees to 1e-7 (RK4's error at that step is
