@@ -1,6 +1,7 @@
 // Benchmark models and state conversions (bench/MODELS.md).
 #include "bench_models.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <stdexcept>
 
@@ -58,12 +59,70 @@ BenchModel bench_model(const std::string& name, const std::string& models) {
   throw std::invalid_argument("unknown benchmark model " + name);
 }
 
+std::vector<std::size_t> euler_parameter_blocks(const BenchModel& model) {
+  std::vector<std::size_t> blocks;
+  for (const Body& body : model.system.bodies) {
+    if (!body.joint) continue;
+    const TreeJoint& joint = *body.joint;
+    if (joint.kind == TreeJoint::Kind::ball || joint.kind == TreeJoint::Kind::floating) {
+      blocks.push_back(joint.coordinates[joint.coordinates.size() - 4]);
+    }
+  }
+  std::sort(blocks.begin(), blocks.end());
+  return blocks;
+}
+
+namespace {
+
+// ω_b = 2 G(e) ė of unit Euler parameters: 2 (e0 ε̇ − ė0 ε − ε × ε̇).
+Eigen::Vector3d body_rate(const Eigen::Vector4d& e, const Eigen::Vector4d& rate) {
+  return 2 * (e[0] * rate.tail<3>() - rate[0] * e.tail<3>() - e.tail<3>().cross(rate.tail<3>()));
+}
+
+// ė = ½ e ⊗ (0, ω_b): (−ε · ω / 2, (e0 ω + ε × ω) / 2).
+Eigen::Vector4d parameter_rates(const Eigen::Vector4d& e, const Eigen::Vector3d& w) {
+  Eigen::Vector4d rate;
+  rate[0] = -0.5 * e.tail<3>().dot(w);
+  rate.tail<3>() = 0.5 * (e[0] * w + e.tail<3>().cross(w));
+  return rate;
+}
+
+// unidyn's n rates from the peer's velocities (ω_b for each block), or back (`to_peer`), with
+// `map(e, from, to)` taking one block's 4 rates or 3 velocities.
+template <class Block>
+Eigen::VectorXd map_rates(const std::vector<std::size_t>& blocks, const Eigen::VectorXd& q,
+                          const Eigen::VectorXd& from, Eigen::Index size, Block block) {
+  Eigen::VectorXd out(size);
+  Eigen::Index i = 0, j = 0;  // the positions in from and out
+  const bool to_peer = size < from.size();
+  for (Eigen::Index k = 0; k < q.size();) {
+    if (std::find(blocks.begin(), blocks.end(), static_cast<std::size_t>(k)) == blocks.end()) {
+      out[j++] = from[i++];
+      ++k;
+      continue;
+    }
+    block(Eigen::Vector4d(q.segment<4>(k)), from, i, out, j);
+    i += to_peer ? 4 : 3;
+    j += to_peer ? 3 : 4;
+    k += 4;
+  }
+  return out;
+}
+
+}  // namespace
+
 void from_peer_state(const BenchModel& model, const Eigen::VectorXd& peer, Eigen::VectorXd& q,
                      Eigen::VectorXd& qdot) {
   const auto n = static_cast<Eigen::Index>(model.system.coordinates().size());
   if (!model.euler) {
+    const std::vector<std::size_t> blocks = euler_parameter_blocks(model);
     q = peer.head(n);
-    qdot = peer.tail(n);
+    const Eigen::VectorXd qvel = peer.tail(peer.size() - n);
+    qdot = map_rates(blocks, q, qvel, n,
+                     [](const Eigen::Vector4d& e, const Eigen::VectorXd& from, Eigen::Index i,
+                        Eigen::VectorXd& out, Eigen::Index j) {
+                       out.segment<4>(j) = parameter_rates(e, from.segment<3>(i));
+                     });
     return;
   }
   // Q from the quaternion, the angles of Q, ω = Q ω_b, the angle rates of ω
@@ -79,8 +138,14 @@ void from_peer_state(const BenchModel& model, const Eigen::VectorXd& peer, Eigen
 Eigen::VectorXd to_peer_state(const BenchModel& model, const Eigen::VectorXd& q,
                               const Eigen::VectorXd& qdot) {
   if (!model.euler) {
-    Eigen::VectorXd peer(q.size() + qdot.size());
-    peer << q, qdot;
+    const std::vector<std::size_t> blocks = euler_parameter_blocks(model);
+    const Eigen::VectorXd qvel =
+        map_rates(blocks, q, qdot, q.size() - static_cast<Eigen::Index>(blocks.size()),
+                  [](const Eigen::Vector4d& e, const Eigen::VectorXd& from, Eigen::Index i,
+                     Eigen::VectorXd& out,
+                     Eigen::Index j) { out.segment<3>(j) = body_rate(e, from.segment<4>(i)); });
+    Eigen::VectorXd peer(q.size() + qvel.size());
+    peer << q, qvel;
     return peer;
   }
   const Tensor Q = rotation_tensor(*model.euler, angles_of(q));
@@ -94,7 +159,14 @@ Eigen::VectorXd to_peer_state(const BenchModel& model, const Eigen::VectorXd& q,
 
 Eigen::VectorXd to_peer_acceleration(const BenchModel& model, const Eigen::VectorXd& q,
                                      const Eigen::VectorXd& qdot, const Eigen::VectorXd& qddot) {
-  if (!model.euler) return qddot;
+  // ω̇_b = 2 G(e) ë + 2 G(ė) ė, and G(ė) ė = 0
+  if (!model.euler) {
+    const std::vector<std::size_t> blocks = euler_parameter_blocks(model);
+    return map_rates(blocks, q, qddot, q.size() - static_cast<Eigen::Index>(blocks.size()),
+                     [](const Eigen::Vector4d& e, const Eigen::VectorXd& from, Eigen::Index i,
+                        Eigen::VectorXd& out,
+                        Eigen::Index j) { out.segment<3>(j) = body_rate(e, from.segment<4>(i)); });
+  }
   // (6.21) differentiated: ω̇ = Σ γ̈ⁱ gᵢ + γ̇¹ γ̇² g1 × g2 + γ̇³ (γ̇¹ g1 + γ̇² g2) × g3, since g1 is
   // fixed, g2 turns at γ̇¹ g1 and g3 at γ̇¹ g1 + γ̇² g2; then ω̇_b = Qᵀ ω̇ (ω × ω = 0)
   const Vec3 angles = angles_of(q), rates = angles_of(qdot);

@@ -24,13 +24,20 @@ struct BenchModel {
 // name.
 BenchModel bench_model(const std::string& name, const std::string& models);
 
-// Peer state → unidyn (q, q̇): pendulums as they are; bodies from quaternion (w, x, y, z) and ω_b.
+// The first coordinate (e0) of each ball or floating joint's Euler parameters, in order: a robot
+// file's peer state is (qpos, qvel) with 3 velocities for each 4 such coordinates (ω on the body's
+// frame, as MuJoCo's).
+std::vector<std::size_t> euler_parameter_blocks(const BenchModel& model);
+
+// Peer state → unidyn (q, q̇): pendulums as they are; bodies from quaternion (w, x, y, z) and ω_b;
+// a robot file's (qpos, qvel) with ė = ½ e ⊗ (0, ω_b) of each Euler-parameter block.
 void from_peer_state(const BenchModel& model, const Eigen::VectorXd& peer, Eigen::VectorXd& q,
                      Eigen::VectorXd& qdot);
 // unidyn (q, q̇) → peer state (quaternion with w ≥ 0).
 Eigen::VectorXd to_peer_state(const BenchModel& model, const Eigen::VectorXd& q,
                               const Eigen::VectorXd& qdot);
-// unidyn q̈ at (q, q̇) → the peer's accelerations: q̈ for pendulums, ω̇_b for bodies.
+// unidyn q̈ at (q, q̇) → the peer's accelerations: q̈ for pendulums, ω̇_b for bodies (and for each
+// Euler-parameter block of a robot file, ω̇_b = 2 G(e) ë).
 Eigen::VectorXd to_peer_acceleration(const BenchModel& model, const Eigen::VectorXd& q,
                                      const Eigen::VectorXd& qdot, const Eigen::VectorXd& qddot);
 

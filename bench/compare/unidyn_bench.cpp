@@ -134,6 +134,16 @@ int derive(const std::string& name, const std::map<std::string, std::string>& o)
 // (solve for q̈ from q, q̇) at the first state.
 int rhs(const std::string& name, const std::map<std::string, std::string>& o) {
   const bench::BenchModel model = bench::bench_model(name, UNIDYN_MODELS_DIR);
+  // --sizes: the peer state's shape, {"nq", "nv", "quaternions": first index of each}
+  if (o.count("--sizes")) {
+    const std::vector<std::size_t> blocks = bench::euler_parameter_blocks(model);
+    std::string list;
+    for (const std::size_t b : blocks) list += (list.empty() ? "" : ", ") + std::to_string(b);
+    const std::size_t nq = model.system.coordinates().size();
+    std::printf("{\"nq\": %zu, \"nv\": %zu, \"quaternions\": [%s]}\n", nq, nq - blocks.size(),
+                list.c_str());
+    return 0;
+  }
   // as `unidyn simulate` compiles it: Kane's equations, or a large tree's recursive dynamics
   const CompiledSystem compiled(model.system, compile_options(option(o, "--evaluation", "native")));
   const SimulationStart initial = initial_state(model.system, {});

@@ -123,9 +123,8 @@ class MujocoBackend final : public Backend {
         m_(model.kind == ModelKind::kRobotFile ? loadFile(model.name) : loadMjcf(buildMjcf(model))),
         d_(mj_makeData(m_.get())) {
     if (!d_) throw std::runtime_error("mj_makeData failed");
-    // a robot file: its hinge and slide joints' (q, q̇), no contact (as unidyn reads it)
+    // a robot file: its (qpos, qvel), no contact (as unidyn reads it)
     if (model.kind == ModelKind::kRobotFile) {
-      if (m_->nq != m_->nv) throw std::runtime_error("a robot file of hinge and slide joints only");
       m_->opt.disableflags |= mjDSBL_CONTACT;
       model_.links = m_->nv;
       return;
@@ -249,11 +248,13 @@ class MujocoBackend final : public Backend {
     mjtNum* qvel = d_->qvel;
     switch (model_.kind) {
       case ModelKind::kRobotFile:
-        if (x.size() != 2 * static_cast<std::size_t>(model_.links)) {
-          throw UsageError("expected " + std::to_string(2 * model_.links) + " numbers (q, q̇) for " +
-                           model_.name);
+        if (x.size() != static_cast<std::size_t>(m_->nq + m_->nv)) {
+          throw UsageError("expected " + std::to_string(m_->nq + m_->nv) +
+                           " numbers (qpos, qvel) for " + model_.name);
         }
-        [[fallthrough]];
+        std::copy(x.begin(), x.begin() + m_->nq, qpos);
+        std::copy(x.begin() + m_->nq, x.end(), qvel);
+        break;
       case ModelKind::kPendulum:
         for (int k = 0; k < model_.links; ++k) {
           qpos[k] = x[k];
@@ -278,10 +279,14 @@ class MujocoBackend final : public Backend {
     const mjtNum* qpos = d_->qpos;
     const mjtNum* qvel = d_->qvel;
     switch (model_.kind) {
-      case ModelKind::kPendulum:
-      case ModelKind::kRobotFile: {
+      case ModelKind::kPendulum: {
         std::vector<double> x(qpos, qpos + model_.links);
         x.insert(x.end(), qvel, qvel + model_.links);
+        return x;
+      }
+      case ModelKind::kRobotFile: {
+        std::vector<double> x(qpos, qpos + m_->nq);
+        x.insert(x.end(), qvel, qvel + m_->nv);
         return x;
       }
       case ModelKind::kHeavyTop:

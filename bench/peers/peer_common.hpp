@@ -43,8 +43,9 @@ inline constexpr double kTopC = 0.002;
 inline constexpr double kFreeMass = 1.0;
 inline constexpr std::array<double, 3> kFreeInertia{2.0, 4.0, 5.0};
 
-// kRobotFile: a URDF or MJCF file of hinge and slide joints, its state (q, q̇) in the file's joint
-// order and its output q̈ (the backend learns the size from the file).
+// kRobotFile: a URDF or MJCF file, its state (qpos, qvel) in the file's joint order — a free or
+// ball joint's quaternion (w, x, y, z) and angular velocity on the body frame — and its output
+// qacc (the backend learns the sizes from the file).
 enum class ModelKind { kPendulum, kHeavyTop, kTorqueFree, kRobotFile };
 
 struct Model {
