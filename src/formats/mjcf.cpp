@@ -13,23 +13,14 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-// Nothing is read from other files, and without <default> there are no classes: <include> and
-// class=/childclass= refused wherever they are.
-void refuse_includes_and_classes(const XmlSource& source, const XMLElement& element) {
+// Nothing is read from other files: <include> refused wherever it is.
+void refuse_includes(const XmlSource& source, const XMLElement& element) {
   if (std::strcmp(element.Name(), "include") == 0) {
     source.refuse(element, "<include> is not supported: unidyn reads one file");
   }
-  for (const char* attribute : {"class", "childclass"}) {
-    if (element.Attribute(attribute)) {
-      source.refuse(element, attribute,
-                    std::string(attribute) +
-                        "= is not supported: <default> classes are not "
-                        "supported yet");
-    }
-  }
   for (const auto* child = element.FirstChildElement(); child;
        child = child->NextSiblingElement()) {
-    refuse_includes_and_classes(source, *child);
+    refuse_includes(source, *child);
   }
 }
 
@@ -127,7 +118,6 @@ void read_top_level(const XmlSource& source, MjcfContext& context, Options& opti
     const std::string name = e->Name();
     if (name == "compiler") read_compiler(source, *e, context);
     if (name == "option") read_option(source, *e, options, context.ignored);
-    if (name == "default") source.refuse(*e, "<default> classes are not supported yet");
     if (name == "equality") {
       source.refuse(*e, "closed loops from <equality> are not supported yet");
     }
@@ -137,7 +127,7 @@ void read_top_level(const XmlSource& source, MjcfContext& context, Options& opti
       context.ignored.add(source, *e, "ignored: contacts between geoms are not modelled");
     } else if (name == "tendon") {
       context.ignored.add(source, *e, "ignored: tendons are not modelled");
-    } else if (name != "compiler" && name != "option" && name != "worldbody") {
+    } else if (name != "compiler" && name != "option" && name != "worldbody" && name != "default") {
       context.ignored.add(source, *e, "ignored");
     }
   }
@@ -155,7 +145,7 @@ ImportedModel import_mjcf(const std::string& text, const std::string& file) {
   if (text.size() > kMaxMjcfBytes) {
     throw ModelError({file, 0, 0}, "an MJCF file larger than 16 MiB is refused");
   }
-  const XmlSource source(text, file);
+  XmlSource source(text, file);
   const XMLElement& mujoco = source.root();
   if (std::string(mujoco.Name()) != "mujoco") {
     source.refuse(mujoco, std::string("expected <mujoco>, found <") + mujoco.Name() + ">");
@@ -165,7 +155,8 @@ ImportedModel import_mjcf(const std::string& text, const std::string& file) {
   if (const std::string why = unprintable_name_reason(name, false); !why.empty()) {
     source.refuse(mujoco, "model", "the model's name " + why);
   }
-  refuse_includes_and_classes(source, mujoco);
+  refuse_includes(source, mujoco);
+  apply_default_classes(source);
   ImportedModel model;
   Ignored ignored;
   Names names;

@@ -23,6 +23,10 @@ struct MjcfContext {
   int joints = 0;
 };
 
+// The <default> classes applied (mjcf_defaults.cpp): each <joint>, <geom>, ... of <worldbody>
+// given its class's attributes that it does not set itself; an unknown class refused.
+void apply_default_classes(XmlSource& source);
+
 // An element's orientation (quat, euler or axisangle; none is the identity): the model's
 // `rotation:` text ("" for none) and its value.
 struct Orientation {

@@ -76,6 +76,15 @@ const tinyxml2::XMLElement& XmlSource::root() const {
   return *document_.RootElement();
 }
 
+tinyxml2::XMLElement& XmlSource::mutable_root() {
+  return *document_.RootElement();
+}
+
+void XmlSource::inherit(const tinyxml2::XMLElement& element, const char* attribute,
+                        const tinyxml2::XMLElement& from) {
+  inherited_[{&element, attribute}] = &from;
+}
+
 // Elements come in the text in document order: each one's '<name' is found after the last one's,
 // on the line tinyxml2 gives.
 void XmlSource::locate_elements(const tinyxml2::XMLElement& element, std::size_t& cursor) {
@@ -126,6 +135,9 @@ std::optional<std::size_t> XmlSource::attribute_offset(const tinyxml2::XMLElemen
 
 SourcePosition XmlSource::position(const tinyxml2::XMLElement& element,
                                    const char* attribute) const {
+  if (const auto from = inherited_.find({&element, attribute}); from != inherited_.end()) {
+    return position(*from->second, attribute);
+  }
   const auto offset = attribute_offset(element, attribute);
   return offset ? at_offset(*offset) : position(element);
 }

@@ -5,6 +5,7 @@
 #include <tinyxml2.h>
 
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -36,6 +37,12 @@ class XmlSource {
   SourcePosition position(const tinyxml2::XMLElement& element) const;
   SourcePosition position(const tinyxml2::XMLElement& element, const char* attribute) const;
 
+  // An attribute given to `element` from another element (MJCF's <default> classes): its
+  // position is then that element's attribute. The document is changed through mutable_root().
+  void inherit(const tinyxml2::XMLElement& element, const char* attribute,
+               const tinyxml2::XMLElement& from);
+  tinyxml2::XMLElement& mutable_root();
+
   // Refuses with a message at the element, or at its attribute.
   [[noreturn]] void refuse(const tinyxml2::XMLElement& element, const std::string& message) const;
   [[noreturn]] void refuse(const tinyxml2::XMLElement& element, const char* attribute,
@@ -63,6 +70,9 @@ class XmlSource {
   tinyxml2::XMLDocument document_;
   std::vector<std::size_t> line_starts_;
   std::unordered_map<const tinyxml2::XMLElement*, std::size_t> element_offsets_;
+  // (element, attribute) → the element that gave the attribute (inherit)
+  std::map<std::pair<const tinyxml2::XMLElement*, std::string>, const tinyxml2::XMLElement*>
+      inherited_;
 };
 
 }  // namespace unidyn::formats

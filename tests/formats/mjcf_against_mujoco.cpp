@@ -26,6 +26,12 @@ TEST(MjcfAgainstMujoco, TwoJointsInOneBodyMassMatrixBiasAndAccelerations) {
   expect_agreement_with_mujoco("two-joints-in-one-body.xml");
 }
 
+// <default> classes (top, nested, childclass, class=) for joint axes and geoms' types and
+// densities, read as MuJoCo reads them.
+TEST(MjcfAgainstMujoco, DefaultClassesMassMatrixBiasAndAccelerations) {
+  expect_agreement_with_mujoco("defaults.xml");
+}
+
 // MuJoCo's default angle unit, degrees, in euler and axisangle.
 TEST(MjcfAgainstMujoco, DegreesMassMatrixBiasAndAccelerations) {
   expect_agreement_with_mujoco("degrees.xml");

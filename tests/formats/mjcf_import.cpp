@@ -122,17 +122,62 @@ TEST(MjcfImport, RefusesWithFileLineAndColumn) {
                  "t.xml:1:39: only eulerseq=\"xyz\" (MuJoCo's default) is supported yet");
   expect_refused(world("  <body/>\n", "<equality/>"),
                  "t.xml:1:19: closed loops from <equality> are not supported yet");
-  expect_refused(world("  <body/>\n", "<default/>"),
-                 "t.xml:1:19: <default> classes are not supported yet");
+  expect_refused(world("  <body/>\n", "<default><default/></default>"),
+                 "t.xml:1:28: a nested <default> needs class=\"...\"");
+  expect_refused(world("  <body/>\n", "<default/><default/>"),
+                 "t.xml:1:29: <mujoco> has one top <default>");
+  expect_refused(
+      world("  <body/>\n", "<default><default class=\"a\"/><default class=\"a\"/></default>"),
+      "t.xml:1:64: class 'a' is defined twice");
+  // an attribute a class gives is refused where the <default> writes it
+  expect_refused(world("  <body><joint/>" + kInertial + "</body>\n",
+                       "<default><joint axis=\"0 x 1\"/></default>"),
+                 "t.xml:1:43: joint axis: 'x' is not a finite decimal number");
   expect_refused(world("  <include file=\"other.xml\"/>\n"),
                  "t.xml:3:3: <include> is not supported: unidyn reads one file");
   expect_refused(world("  <body childclass=\"arm\"/>\n"),
-                 "t.xml:3:21: childclass= is not supported: <default> classes are not supported");
+                 "t.xml:3:21: class 'arm' is not defined in <default>");
+  expect_refused(world("  <body><joint class=\"leg\"/>" + kInertial + "</body>\n"),
+                 "t.xml:3:23: class 'leg' is not defined in <default>");
   expect_refused(world("  <body><joint stiffness=\"2\"/>" + kInertial + "</body>\n"),
                  "t.xml:3:27: joint stiffness is not supported yet");
   expect_refused(world("  <body><joint type=\"slide\" damping=\"1\"/>" + kInertial + "</body>\n"),
                  "t.xml:3:38: joint damping on a slide joint is not supported yet");
   expect_refused("<robot name=\"r\"/>\n", "t.xml:1:1: expected <mujoco>, found <robot>");
+}
+
+// <default> classes: the file imports as the same file with every class's attributes written
+// out by hand where MuJoCo applies them — the top class on every joint and geom, a body's
+// childclass on its subtree, a joint's own class over it, a nested class over its parent's, and
+// an attribute an element sets itself kept.
+TEST(MjcfImport, DefaultClassesAsIfWrittenOut) {
+  const std::string classes =
+      "<default><joint axis=\"0 1 0\" damping=\"0.1\"/><geom density=\"500\"/>"
+      "<default class=\"leg\"><joint axis=\"1 0 0\"/><default class=\"knee\">"
+      "<joint damping=\"0.3\"/></default></default></default>";
+  const std::string with_classes = world(
+      "  <body name=\"a\" childclass=\"leg\">\n"
+      "    <joint name=\"hip\"/>\n    <geom size=\"0.1\"/>\n"
+      "    <body name=\"b\" pos=\"0 0 -1\">\n"
+      "      <joint name=\"knee\" class=\"knee\"/>\n      <geom size=\"0.1\"/>\n"
+      "      <body name=\"c\" pos=\"0 0 -1\" childclass=\"main\">\n"
+      "        <joint name=\"ankle\" damping=\"0.5\"/>\n        <geom size=\"0.05\"/>\n"
+      "      </body>\n    </body>\n  </body>\n",
+      classes);
+  const std::string written_out = world(
+      "  <body name=\"a\">\n"
+      "    <joint name=\"hip\" axis=\"1 0 0\" damping=\"0.1\"/>\n"
+      "    <geom size=\"0.1\" density=\"500\"/>\n"
+      "    <body name=\"b\" pos=\"0 0 -1\">\n"
+      "      <joint name=\"knee\" axis=\"1 0 0\" damping=\"0.3\"/>\n"
+      "      <geom size=\"0.1\" density=\"500\"/>\n"
+      "      <body name=\"c\" pos=\"0 0 -1\">\n"
+      "        <joint name=\"ankle\" axis=\"0 1 0\" damping=\"0.5\"/>\n"
+      "        <geom size=\"0.05\" density=\"500\"/>\n"
+      "      </body>\n    </body>\n  </body>\n");
+  const std::string yaml = import_mjcf(with_classes, "t.xml").yaml;
+  EXPECT_EQ(yaml, import_mjcf(written_out, "t.xml").yaml);
+  EXPECT_TRUE(has_line(yaml, "  - torsion_damper: {angle: knee, coefficient: 0.3}")) << yaml;
 }
 
 // A free body falls: on the Euler parameters' constraint its centre accelerates at the
