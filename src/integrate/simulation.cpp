@@ -152,10 +152,13 @@ class Projector {
  private:
   Eigen::VectorXd correction(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
                              const Eigen::MatrixXd& A, const Eigen::VectorXd& r) {
+    // a semi-definite M (redundant coordinates) has no kinetic-energy norm: the Euclidean one
+    // then — and for a tree the recursive algorithms solve, which form no M: its only
+    // constraints are the unit norms of Euler parameters, whose M is semi-definite
+    if (compiled_.recursive()) return A.transpose() * (A * A.transpose()).ldlt().solve(r);
     Eigen::VectorXd qddot, lambda;
     compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data_);  // fills the mass matrix
     const Eigen::LLT<Eigen::MatrixXd> llt(data_.mass_matrix);
-    // a semi-definite M (redundant coordinates) has no kinetic-energy norm: the Euclidean one then
     const Eigen::MatrixXd MinvAt =
         llt.info() == Eigen::Success ? Eigen::MatrixXd(llt.solve(A.transpose())) : A.transpose();
     return MinvAt * (A * MinvAt).ldlt().solve(r);

@@ -349,7 +349,7 @@ CompiledSystemData CompiledSystem::make_data() const {
   data.inputs.resize(1 + 4 * n_ + m_ + p_);
   data.outputs.resize(std::max({dynamics_.output_count(), constraints_.output_count(),
                                 observer_.output_count(), friction_.output_count()}));
-  data.mass_matrix.resize(n_, n_);
+  data.mass_matrix.setZero(n_, n_);  // never garbage, though the recursive solve leaves it
   data.mass_factor.resize(n_ * n_);
   data.forcing.resize(n_);
   data.convective.resize(n_);
