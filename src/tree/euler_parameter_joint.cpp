@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "unidyn/rotation/euler_parameters.hpp"
+
 namespace unidyn::tree {
 
 namespace {
@@ -11,14 +13,6 @@ namespace {
 // The first of the Euler parameters among the link's coordinates (after x, y, z when floating).
 Eigen::Index first_parameter(const TreeLink& link) {
   return link.coordinate + (link.kind == JointKind::floating ? 3 : 0);
-}
-
-// (6.36) R(ê) of a unit ê.
-Eigen::Matrix3d euler_parameter_rotation(const Eigen::Vector4d& e) {
-  const double e0 = e[0];
-  const Eigen::Vector3d v = e.tail<3>();
-  return (e0 * e0 - v.dot(v)) * Eigen::Matrix3d::Identity() + 2 * v * v.transpose() +
-         2 * e0 * cross_matrix(v);
 }
 
 // The quaternion product ê ⊗ (0, w): (−ε · w, e0 w + ε × w).
@@ -35,7 +29,7 @@ FramePlacement euler_joint_placement(const TreeLink& link, TreeVector q, EulerJo
   const Eigen::Vector4d e = q.segment<4>(first_parameter(link));
   joint.norm = e.norm();
   joint.unit = e / joint.norm;
-  joint.rotation = euler_parameter_rotation(joint.unit);
+  joint.rotation = rotation_tensor(EulerParameters{joint.unit[0], joint.unit.tail<3>()});  // (6.36)
   FramePlacement X{link.fixed_rotation * joint.rotation, link.origin};
   if (link.kind == JointKind::floating)
     X.offset += link.fixed_rotation * q.segment<3>(link.coordinate);
