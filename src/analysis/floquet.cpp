@@ -20,8 +20,6 @@ using namespace detail;
 
 namespace {
 
-// |μ| this close to 1 is on the unit circle; multipliers this close are one.
-constexpr double kOnCircle = 1e-6;
 // The motion must come back to the point to this fraction of its size, times Φ's growth.
 constexpr double kReturn = 1e-8;
 
@@ -41,7 +39,7 @@ VectorXd kept_values(const Linearization& L, const Choice& choice, const VectorX
 
 std::string multiplier_text(complex mu) {
   const std::string re = detail::to_short_text(mu.real(), 6);
-  if (std::abs(mu.imag()) <= kOnCircle * std::max(1.0, std::abs(mu))) return re;
+  if (std::abs(mu.imag()) <= kFloquetOnCircle * std::max(1.0, std::abs(mu))) return re;
   return re + (mu.imag() < 0 ? "-" : "+") + detail::to_short_text(std::abs(mu.imag()), 6) + "i";
 }
 
@@ -102,7 +100,7 @@ double largest_multiplier(const MatrixXd& monodromy) {
 
 FloquetAnalysis analyse_floquet(const PeriodicLinearization& P) {
   FloquetAnalysis out;
-  out.tolerance = kOnCircle;
+  out.tolerance = kFloquetOnCircle;
   const MatrixXd& Phi = P.monodromy;
   const Index s = Phi.rows();
   if (s == 0) {
@@ -120,7 +118,7 @@ FloquetAnalysis analyse_floquet(const PeriodicLinearization& P) {
   std::vector<Index> order(static_cast<std::size_t>(s));
   for (Index k = 0; k < s; ++k) order[static_cast<std::size_t>(k)] = k;
   std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) {
-    if (std::abs(std::abs(mu[a]) - std::abs(mu[b])) > kOnCircle) {
+    if (std::abs(std::abs(mu[a]) - std::abs(mu[b])) > kFloquetOnCircle) {
       return std::abs(mu[a]) > std::abs(mu[b]);
     }
     return std::arg(mu[a]) < std::arg(mu[b]);
@@ -134,7 +132,7 @@ FloquetAnalysis analyse_floquet(const PeriodicLinearization& P) {
   double most = 0.0;
   for (const Index k : order) {
     most = std::max(most, std::abs(mu[k]));
-    if (std::abs(mu[k]) > 1.0 + kOnCircle) {
+    if (std::abs(mu[k]) > 1.0 + kFloquetOnCircle) {
       outside += (outside.empty() ? "" : ", ") + multiplier_text(mu[k]);
     }
   }
@@ -147,18 +145,19 @@ FloquetAnalysis analyse_floquet(const PeriodicLinearization& P) {
   }
   std::vector<bool> seen(static_cast<std::size_t>(s), false);
   for (const Index k : order) {
-    if (seen[static_cast<std::size_t>(k)] || std::abs(std::abs(mu[k]) - 1.0) > kOnCircle) continue;
+    if (seen[static_cast<std::size_t>(k)] || std::abs(std::abs(mu[k]) - 1.0) > kFloquetOnCircle)
+      continue;
     Index multiplicity = 0;
     for (Index j = 0; j < s; ++j) {
-      if (!seen[static_cast<std::size_t>(j)] && std::abs(mu[j] - mu[k]) <= kOnCircle) {
+      if (!seen[static_cast<std::size_t>(j)] && std::abs(mu[j] - mu[k]) <= kFloquetOnCircle) {
         seen[static_cast<std::size_t>(j)] = true;
         ++multiplicity;
       }
     }
-    if (mu[k].imag() < -kOnCircle) continue;  // its conjugate speaks for it
+    if (mu[k].imag() < -kFloquetOnCircle) continue;  // its conjugate speaks for it
     on_circle += (on_circle.empty() ? "" : ", ") + multiplier_text(mu[k]) +
                  (multiplicity > 1 ? " (" + std::to_string(multiplicity) + " times)" : "");
-    if (!semisimple(Phi, mu[k], multiplicity, kOnCircle * std::max(1.0, largest(Phi)))) {
+    if (!semisimple(Phi, mu[k], multiplicity, kFloquetOnCircle * std::max(1.0, largest(Phi)))) {
       defective += (defective.empty() ? "" : ", ") + multiplier_text(mu[k]);
     }
   }

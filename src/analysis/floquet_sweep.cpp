@@ -15,8 +15,6 @@ namespace {
 
 using Eigen::MatrixXd;
 
-constexpr double kOnCircle = 1e-6;
-
 // The monodromy matrix at one value, or why there is none.
 struct Evaluated {
   FloquetSweepPoint point;
@@ -63,16 +61,16 @@ Evaluated evaluate_at(const SweepSetting& s, double value) {
   const double most = out.point.multipliers.empty() ? 0.0 : std::abs(out.point.multipliers[0]);
   out.point.growth =
       most > 0.0 ? std::log(most) / out.point.period : -std::numeric_limits<double>::infinity();
-  out.point.growing = most > 1.0 + kOnCircle;
+  out.point.growing = most > 1.0 + kFloquetOnCircle;
   return out;
 }
 
-// det(Φ − I), det(Φ + I) and the largest |μ| − 1 − kOnCircle at an evaluated value.
+// det(Φ − I), det(Φ + I) and the largest |μ| − 1 − kFloquetOnCircle at an evaluated value.
 double indicator(const Evaluated& e, int which) {
   const MatrixXd I = MatrixXd::Identity(e.monodromy.rows(), e.monodromy.cols());
   if (which == 0) return (e.monodromy - I).determinant();
   if (which == 1) return (e.monodromy + I).determinant();
-  return largest_multiplier(e.monodromy) - 1.0 - kOnCircle;
+  return largest_multiplier(e.monodromy) - 1.0 - kFloquetOnCircle;
 }
 
 // Which indicator changes sign, beyond round-off, between a and b: det(Φ − I), det(Φ + I), or

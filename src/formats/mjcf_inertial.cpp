@@ -10,8 +10,8 @@ using tinyxml2::XMLElement;
 
 // The tensor on the inertial frame: diaginertia="A B C", or fullinertia="Ixx Iyy Izz Ixy Ixz
 // Iyz" (MuJoCo's order), as typed.
-std::vector<std::vector<Number>> inertia_components(const XmlSource& source,
-                                                    const XMLElement& inertial) {
+std::vector<std::vector<Number>> typed_mjcf_tensor(const XmlSource& source,
+                                                   const XMLElement& inertial) {
   const bool diagonal = inertial.Attribute("diaginertia") != nullptr;
   if (diagonal == (inertial.Attribute("fullinertia") != nullptr)) {
     source.refuse(inertial, "<inertial> needs diaginertia=\"...\" or fullinertia=\"...\" (one)");
@@ -29,7 +29,7 @@ std::vector<std::vector<Number>> inertia_components(const XmlSource& source,
 // the tensor (turned by the inertial frame's orientation, R J Rᵀ, with a note and a comment).
 void write_inertia(const MjcfContext& context, const XMLElement& inertial,
                    std::vector<std::string>& lines) {
-  const auto components = inertia_components(context.source, inertial);
+  const auto components = typed_mjcf_tensor(context.source, inertial);
   Eigen::Matrix3d J;
   std::vector<std::vector<std::string>> rows(3, std::vector<std::string>(3));
   for (int i = 0; i < 3; ++i) {

@@ -21,8 +21,8 @@ Eigen::Matrix3d rpy_rotation(const std::vector<Number>& rpy) {
 }
 
 // The tensor of <inertia ixx ixy ixz iyy iyz izz>, as typed.
-std::vector<std::vector<Number>> inertia_components(const XmlSource& source,
-                                                    const XMLElement& inertia) {
+std::vector<std::vector<Number>> typed_urdf_tensor(const XmlSource& source,
+                                                   const XMLElement& inertia) {
   const auto at = [&](const char* name) {
     if (!inertia.Attribute(name)) source.refuse(inertia, std::string("<inertia> needs ") + name);
     return (*source.numbers(inertia, name, 1))[0];
@@ -39,7 +39,7 @@ void write_inertia(const LinkContext& context, const XMLElement& inertial,
   const XmlSource& source = context.source;
   const XMLElement* inertia = inertial.FirstChildElement("inertia");
   if (!inertia) source.refuse(inertial, "<inertial> needs <inertia ixx=... izz=...>");
-  const auto components = inertia_components(source, *inertia);
+  const auto components = typed_urdf_tensor(source, *inertia);
   Eigen::Matrix3d J;
   std::vector<std::vector<std::string>> rows(3, std::vector<std::string>(3));
   for (int i = 0; i < 3; ++i) {
@@ -70,7 +70,7 @@ void write_inertia(const LinkContext& context, const XMLElement& inertial,
 void expect_frame(const XmlSource& source, const XMLElement& inertial) {
   const XMLElement* inertia = inertial.FirstChildElement("inertia");
   if (!inertia) return;
-  for (const auto& row : inertia_components(source, *inertia)) {
+  for (const auto& row : typed_urdf_tensor(source, *inertia)) {
     for (const Number& x : row) {
       if (x.value != 0) {
         source.refuse(*inertia,

@@ -1,6 +1,7 @@
 // Text, LaTeX and JSON forms of the derived equations.
 #include "unidyn/io/equation_report.hpp"
 
+#include "unidyn/io/json_text.hpp"
 #include "unidyn/symbolic/printing.hpp"
 #include "unidyn/symbolic/textbook_form.hpp"
 
@@ -93,20 +94,6 @@ std::string render_vector(const VectorExpr& v, bool latex) {
     text += (k ? (latex ? " \\\\ " : ", ") : "") + (latex ? to_latex(v[k]) : to_text(v[k]));
   }
   return text + (latex ? "\\end{bmatrix}" : "]");
-}
-
-// A JSON string literal.
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') {
-      out += "\\n";
-      continue;
-    }
-    out += c;
-  }
-  return out + "\"";
 }
 
 std::string render(const Expr& e, EquationFormat format) {

@@ -19,17 +19,18 @@
 #include "unidyn/numeric/digest.hpp"
 
 namespace unidyn {
+
+std::string environment_variable(const char* name) {
+  const char* value = std::getenv(name);
+  return value != nullptr ? value : "";
+}
+
 namespace {
 
 namespace fs = std::filesystem;
 
 std::string system_error(const std::string& what) {
   return what + ": " + std::strerror(errno);
-}
-
-std::string environment(const char* name) {
-  const char* value = std::getenv(name);
-  return value != nullptr ? value : "";
 }
 
 // A file descriptor closed when it goes out of scope.
@@ -98,14 +99,14 @@ void create_private_directories(const fs::path& directory) {
 // The cache directory the user configured, and where the setting came from; "" when none.
 std::pair<fs::path, std::string> configured_directory(const std::string& configured) {
   if (!configured.empty()) return {configured, "the cache directory given"};
-  if (const std::string d = environment("UNIDYN_CACHE_DIR"); !d.empty()) {
+  if (const std::string d = environment_variable("UNIDYN_CACHE_DIR"); !d.empty()) {
     return {d, "UNIDYN_CACHE_DIR"};
   }
   // the XDG base directory specification ignores relative paths
-  if (const std::string d = environment("XDG_CACHE_HOME"); !d.empty() && d[0] == '/') {
+  if (const std::string d = environment_variable("XDG_CACHE_HOME"); !d.empty() && d[0] == '/') {
     return {fs::path(d) / "unidyn", "XDG_CACHE_HOME"};
   }
-  if (const std::string d = environment("HOME"); !d.empty() && d[0] == '/') {
+  if (const std::string d = environment_variable("HOME"); !d.empty() && d[0] == '/') {
     return {fs::path(d) / ".cache" / "unidyn", "HOME"};
   }
   return {};
@@ -113,7 +114,7 @@ std::pair<fs::path, std::string> configured_directory(const std::string& configu
 
 // The directory for private temporary ones: $TMPDIR when absolute, else /tmp.
 fs::path temporary_parent() {
-  const std::string d = environment("TMPDIR");
+  const std::string d = environment_variable("TMPDIR");
   return !d.empty() && d[0] == '/' ? fs::path(d) : fs::path("/tmp");
 }
 

@@ -36,18 +36,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string environment(const char* name) {
-  const char* value = std::getenv(name);
-  return value != nullptr ? value : "";
-}
-
 // The compiler as the shell finds it (through PATH when it has no slash), resolved to its file.
 fs::path resolve_executable(const std::string& command) {
   std::vector<fs::path> candidates;
   if (command.find('/') != std::string::npos) {
     candidates.emplace_back(command);
   } else {
-    std::stringstream path(environment("PATH"));
+    std::stringstream path(environment_variable("PATH"));
     for (std::string directory; std::getline(path, directory, ':');) {
       candidates.push_back(fs::path(directory.empty() ? "." : directory) / command);
     }
@@ -285,7 +280,7 @@ std::shared_ptr<const NativeLibrary> NativeLibrary::build(
   }
   identity.source = sha256_hex(body);
   std::string compiler = options.compiler;
-  if (compiler.empty()) compiler = environment("CXX");
+  if (compiler.empty()) compiler = environment_variable("CXX");
   if (compiler.empty()) compiler = "c++";
   // The key: everything that determines the library — the source itself too, so that a library
   // is only ever the one this process would compile (another build of unidyn may order the same

@@ -369,10 +369,7 @@ std::string canonical_text(const Expr& e) {
   // the texts printed so far (the canonical order compares texts, again and again): equal
   // expressions by GiNaC's hash and equality; dropped when they grow past a bound
   constexpr std::size_t kKept = 100000;
-  struct Hash {
-    std::size_t operator()(const Expr& x) const { return x.gethash(); }
-  };
-  thread_local std::unordered_map<Expr, std::string, Hash, GiNaC::ex_is_equal> printed;
+  thread_local std::unordered_map<Expr, std::string, ExprHash, GiNaC::ex_is_equal> printed;
   if (const auto found = printed.find(e); found != printed.end()) return found->second;
   if (printed.size() >= kKept) printed.clear();
   return printed.emplace(e, text_printer().print(e, 0)).first->second;

@@ -268,10 +268,7 @@ namespace {
 // The results kept for f: equal expressions by GiNaC's hash and equality, one table per function;
 // dropped when they grow past a bound.
 constexpr std::size_t kKept = 20000;
-struct Hash {
-  std::size_t operator()(const Expr& x) const { return x.gethash(); }
-};
-using Table = std::unordered_map<Expr, Expr, Hash, GiNaC::ex_is_equal>;
+using Table = std::unordered_map<Expr, Expr, ExprHash, GiNaC::ex_is_equal>;
 Table& remembered_by(Expr (*f)(const Expr&)) {
   thread_local std::map<Expr (*)(const Expr&), Table> tables;
   return tables[f];
@@ -288,7 +285,7 @@ Expr remembered(const Expr& e, Expr (*f)(const Expr&)) {
 
 std::vector<Expr> remembered_all(const std::vector<Expr>& es, Expr (*f)(const Expr&)) {
   // the ones not met before, each once, shared among the processes; then all remembered
-  std::unordered_set<Expr, Hash, GiNaC::ex_is_equal> met;
+  std::unordered_set<Expr, ExprHash, GiNaC::ex_is_equal> met;
   std::vector<Expr> fresh;
   for (const Expr& e : es) {
     if (!recalled(e, f) && met.insert(e).second) fresh.push_back(e);

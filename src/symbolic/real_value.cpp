@@ -39,18 +39,18 @@ std::optional<double> apply(const std::string& name, double x, double y) {
 
 // Values at several points at once, NaN where not a finite real: each node is looked at once
 // (shared nodes too) whatever the number of points.
-using Values = std::vector<double>;
+using Samples = std::vector<double>;
 
 class Evaluator {
  public:
   explicit Evaluator(const std::vector<GiNaC::exmap>& points) : points_(points) {}
 
-  const Values& operator()(const Expr& e) const {
+  const Samples& operator()(const Expr& e) const {
     // a node shared by several parents once (the node held: op() makes some anew, and a freed
     // node's address may be another's next)
     const GiNaC::basic* node = &GiNaC::ex_to<GiNaC::basic>(e);
     if (const auto it = memo_.find(node); it != memo_.end()) return it->second.second;
-    Values v = value(e);
+    Samples v = value(e);
     for (double& x : v) {
       if (!std::isfinite(x)) x = NAN;
     }
@@ -58,17 +58,17 @@ class Evaluator {
   }
 
  private:
-  Values constant(double x) const { return Values(points_.size(), x); }
+  Samples constant(double x) const { return Samples(points_.size(), x); }
 
   // a scalar function of one or two values at each point
   template <typename F>
-  Values each(const Values& x, const Values& y, F f) const {
-    Values r(x.size());
+  Samples each(const Samples& x, const Samples& y, F f) const {
+    Samples r(x.size());
     for (std::size_t k = 0; k < x.size(); ++k) r[k] = f(x[k], y[k]);
     return r;
   }
 
-  Values value(const Expr& e) const {
+  Samples value(const Expr& e) const {
     using GiNaC::is_exactly_a;
     if (is_exactly_a<GiNaC::numeric>(e)) {
       const auto& n = GiNaC::ex_to<GiNaC::numeric>(e);
@@ -79,9 +79,9 @@ class Evaluator {
       // changes from build to build): the same rounding whatever order the terms are kept in,
       // and for −(b − a) as for a − b, which GiNaC writes either way; a zero without a sign
       const bool sum = is_exactly_a<GiNaC::add>(e);
-      std::vector<const Values*> operands;
+      std::vector<const Samples*> operands;
       for (const auto& operand : e) operands.push_back(&(*this)(operand));
-      Values result(points_.size());
+      Samples result(points_.size());
       std::vector<double> at(operands.size());
       for (std::size_t k = 0; k < result.size(); ++k) {
         bool defined = true;
@@ -109,7 +109,7 @@ class Evaluator {
       });
     }
     if (GiNaC::is_a<GiNaC::symbol>(e)) {
-      Values r(points_.size());
+      Samples r(points_.size());
       for (std::size_t k = 0; k < r.size(); ++k) {
         const auto found = points_[k].find(e);
         r[k] = found == points_[k].end() || !GiNaC::is_a<GiNaC::numeric>(found->second)
@@ -123,8 +123,8 @@ class Evaluator {
       return GiNaC::is_a<GiNaC::numeric>(v) ? (*this)(v) : constant(NAN);
     }
     if (GiNaC::is_a<GiNaC::function>(e) && (e.nops() == 1 || e.nops() == 2)) {
-      const Values& x = (*this)(e.op(0));
-      const Values& y = e.nops() == 2 ? (*this)(e.op(1)) : x;
+      const Samples& x = (*this)(e.op(0));
+      const Samples& y = e.nops() == 2 ? (*this)(e.op(1)) : x;
       const std::string& name = GiNaC::ex_to<GiNaC::function>(e).get_name();
       if (name != "atan2" && !apply(name, 0.5, 0.5)) return constant(NAN);
       return each(x, y, [&](double a, double b) {
@@ -136,7 +136,7 @@ class Evaluator {
   }
 
   const std::vector<GiNaC::exmap>& points_;
-  mutable std::unordered_map<const GiNaC::basic*, std::pair<Expr, Values>> memo_;
+  mutable std::unordered_map<const GiNaC::basic*, std::pair<Expr, Samples>> memo_;
 };
 
 std::optional<double> finite(double x) {
@@ -156,7 +156,7 @@ std::vector<std::vector<std::optional<double>>> real_values(
   const Evaluator evaluate(points);
   std::vector<std::vector<std::optional<double>>> result;
   for (const Expr& x : e) {
-    const Values& v = evaluate(x);
+    const Samples& v = evaluate(x);
     result.emplace_back();
     for (const double y : v) result.back().push_back(finite(y));
   }

@@ -6,10 +6,7 @@
 namespace unidyn {
 namespace {
 
-struct Hash {
-  std::size_t operator()(const Expr& x) const { return x.gethash(); }
-};
-using Made = std::unordered_map<Expr, Expr, Hash, GiNaC::ex_is_equal>;
+using Made = std::unordered_map<Expr, Expr, ExprHash, GiNaC::ex_is_equal>;
 
 // f(x) from `made`, or made now and kept.
 Expr made_once(Made& made, const Expr& x, Expr (*f)(const Expr&)) {

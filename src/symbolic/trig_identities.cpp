@@ -88,10 +88,7 @@ class TermCache {
   }
 
  private:
-  struct Hash {
-    std::size_t operator()(const Expr& x) const { return x.gethash(); }
-  };
-  std::unordered_map<Expr, Entry, Hash, GiNaC::ex_is_equal> entries_;
+  std::unordered_map<Expr, Entry, ExprHash, GiNaC::ex_is_equal> entries_;
 };
 
 Readings readings_of(const std::vector<Expr>& terms, TermCache& cache) {
@@ -272,10 +269,6 @@ Expr combine_angle_sums(const Expr& e) {
 }
 
 namespace {
-
-struct ExprHash {
-  std::size_t operator()(const Expr& x) const { return x.gethash(); }
-};
 
 // A term of an expanded sum by the arguments x of its sines and cosines: its degree in sin x and
 // cos x together, or none where they sit inside something else (a root, another function).

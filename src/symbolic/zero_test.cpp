@@ -201,9 +201,6 @@ struct Values {
   std::vector<bool> defined;
 };
 
-struct ExprHash {
-  std::size_t operator()(const Expr& x) const { return x.gethash(); }
-};
 using PointValues =
     std::unordered_map<Expr, std::vector<std::uint64_t>, ExprHash, GiNaC::ex_is_equal>;
 

@@ -39,6 +39,9 @@
 
 namespace unidyn {
 
+// |μ| this close to 1 is on the unit circle; multipliers this close are one.
+constexpr double kFloquetOnCircle = 1e-6;
+
 struct PeriodicLinearization {
   DrivePeriod period;
   double t0 = 0.0;

@@ -21,6 +21,9 @@
 
 namespace unidyn {
 
+// The environment variable `name`'s value, or "" when it is not set.
+std::string environment_variable(const char* name);
+
 // Why `directory` cannot hold code that we load, or "" when it can. It must exist.
 std::string untrusted_directory_reason(const std::filesystem::path& directory);
 

@@ -15,6 +15,11 @@ namespace unidyn {
 
 using Expr = GiNaC::ex;
 
+// GiNaC's hash of an expression, for containers keyed by expressions (with GiNaC::ex_is_equal).
+struct ExprHash {
+  std::size_t operator()(const Expr& x) const { return x.gethash(); }
+};
+
 struct VectorExpr {
   std::array<Expr, 3> c{0, 0, 0};
 

@@ -39,10 +39,7 @@ class SymbolTable {
 
  private:
   std::vector<Expr> symbols_;
-  struct Hash {
-    std::size_t operator()(const Expr& x) const { return x.gethash(); }
-  };
-  std::unordered_map<Expr, std::size_t, Hash, GiNaC::ex_is_equal> places_;
+  std::unordered_map<Expr, std::size_t, ExprHash, GiNaC::ex_is_equal> places_;
 };
 
 // `e` appended to `bytes`. Throws Untransportable (and appends nothing).

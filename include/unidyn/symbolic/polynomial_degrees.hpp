@@ -18,11 +18,8 @@ class PolynomialDegrees {
   std::vector<std::optional<int>> operator()(const Expr& p) const;
 
  private:
-  struct Hash {
-    std::size_t operator()(const Expr& x) const { return x.gethash(); }
-  };
   std::vector<Expr> xs_;
-  std::unordered_map<Expr, std::size_t, Hash, GiNaC::ex_is_equal> index_;
+  std::unordered_map<Expr, std::size_t, ExprHash, GiNaC::ex_is_equal> index_;
 };
 
 // The same for one expression.
