@@ -118,16 +118,14 @@ void read_top_level(const XmlSource& source, MjcfContext& context, Options& opti
     const std::string name = e->Name();
     if (name == "compiler") read_compiler(source, *e, context);
     if (name == "option") read_option(source, *e, options, context.ignored);
-    if (name == "equality") {
-      source.refuse(*e, "closed loops from <equality> are not supported yet");
-    }
     if (name == "actuator" || name == "sensor") {
       context.ignored.add(source, *e, "ignored: it does not change the passive dynamics");
     } else if (name == "contact") {
       context.ignored.add(source, *e, "ignored: contacts between geoms are not modelled");
     } else if (name == "tendon") {
       context.ignored.add(source, *e, "ignored: tendons are not modelled");
-    } else if (name != "compiler" && name != "option" && name != "worldbody" && name != "default") {
+    } else if (name != "compiler" && name != "option" && name != "worldbody" && name != "default" &&
+               name != "equality") {
       context.ignored.add(source, *e, "ignored");
     }
   }
@@ -173,6 +171,11 @@ ImportedModel import_mjcf(const std::string& text, const std::string& file) {
        world = world->NextSiblingElement("worldbody")) {
     ignore_others(source, *world, {"body"}, ignored);
     write_child_bodies(context, *world, "");
+  }
+  // the loops and couplings, once every body and joint is known
+  for (const auto* equality = mujoco.FirstChildElement("equality"); equality;
+       equality = equality->NextSiblingElement("equality")) {
+    write_equalities(context, *equality);
   }
   model.yaml = model_yaml(header(name, file, options), written);
   for (auto& note : ignored.notes()) model.notes.push_back(std::move(note));

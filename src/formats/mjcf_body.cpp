@@ -122,6 +122,7 @@ std::vector<MjcfJoint> read_joints(MjcfContext& context, const XMLElement& body,
     }
     joint.coordinates = coordinate_names(context, *e, joint.type, joint.name);
     for (const auto& q : joint.coordinates) context.written.coordinates.push_back(q);
+    if (e->Attribute("name")) context.named_joints[joint.name] = {joint.type, joint.coordinates};
     read_damping(context, joint);
     joints.push_back(std::move(joint));
   }
@@ -246,6 +247,14 @@ void write_body(MjcfContext& context, const XMLElement& body, const std::string&
   ignore_others(source, body, {"inertial", "joint", "freejoint", "body", "geom"}, context.ignored);
   const Vector pos = source.numbers_or(body, "pos", {"0", "0", "0"});
   const Orientation turned = orientation(context, body);
+  // its frame at qpos0: every joint's motion is 0 there (a free body's pos and orientation place
+  // it)
+  const auto parent_frame = context.frames.find(parent);
+  Eigen::Isometry3d frame =
+      parent_frame != context.frames.end() ? parent_frame->second : Eigen::Isometry3d::Identity();
+  frame = frame * Eigen::Translation3d(pos[0].value, pos[1].value, pos[2].value) * turned.value;
+  context.frames[name] = frame;
+  if (given) context.named_bodies[given] = {name, frame};
   const auto joints = read_joints(context, body, parent.empty());
   const std::string line = place_body(context, name, parent, pos, turned, joints);
   auto& bodies = context.written.bodies;

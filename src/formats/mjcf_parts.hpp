@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,19 @@
 #include "urdf_tree.hpp"
 
 namespace unidyn::formats {
+
+// A named body's model name and its frame on the ground at MuJoCo's reference configuration qpos0
+// (hinges and slides at 0, balls unturned, a free body where the file puts it).
+struct MjcfBodyFrame {
+  std::string name;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+};
+
+// A named joint's type and coordinates.
+struct MjcfJointCoordinates {
+  std::string type;
+  std::vector<std::string> coordinates;
+};
 
 // What the bodies are written with: <compiler>'s angle unit, the names, and what is written.
 struct MjcfContext {
@@ -21,6 +35,12 @@ struct MjcfContext {
   bool inertia_from_geom = true;  // <compiler inertiafromgeom> "auto" (the default) or "false"
   int bodies = 0;                 // MuJoCo's ids: the world is body 0
   int joints = 0;
+  int equalities = 0;
+  // for <equality>: the bodies and joints by their names in the file, and each body's frame at
+  // qpos0 by its model name
+  std::map<std::string, MjcfBodyFrame> named_bodies{};
+  std::map<std::string, MjcfJointCoordinates> named_joints{};
+  std::map<std::string, Eigen::Isometry3d> frames{};
 };
 
 // The <default> classes applied (mjcf_defaults.cpp): each <joint>, <geom>, ... of <worldbody>
@@ -39,6 +59,9 @@ Orientation orientation(const MjcfContext& context, const tinyxml2::XMLElement& 
 // depth-first in file order (MuJoCo's order of bodies and of qpos).
 void write_child_bodies(MjcfContext& context, const tinyxml2::XMLElement& parent_element,
                         const std::string& parent);
+
+// The constraints of an <equality> element (mjcf_equality.cpp), after the bodies are read.
+void write_equalities(MjcfContext& context, const tinyxml2::XMLElement& equality);
 
 // The body lines after its `joint:` from <inertial>: mass, inertia, centre (mass: 0 without).
 std::vector<std::string> inertial_lines(const MjcfContext& context,

@@ -109,6 +109,8 @@ std::string model_yaml(const ModelHeader& header, const Written& w) {
   if (!header.gravity.empty() || !w.dampers.empty()) yaml += "\nforces:\n";
   if (!header.gravity.empty()) yaml += header.gravity + "\n";
   for (const auto& line : w.dampers) yaml += line + "\n";
+  if (!w.constraints.empty()) yaml += "\nconstraints:\n";
+  for (const auto& line : w.constraints) yaml += line + "\n";
   yaml += "\ninitial: {" + joined(w.initial) + "}\n";
   yaml += "simulate: {t_end: 5, output_step: 0.01}\n";
   return yaml;

@@ -55,11 +55,12 @@ void expect_realisable(const XmlSource& source, const tinyxml2::XMLElement& elem
                        const Eigen::Matrix3d& J);
 
 // What an imported model is written from: the bodies' lines, the coordinates, the forces after
-// gravity (dampers), the initial values.
+// gravity (dampers), the constraints' lines, the initial values.
 struct Written {
   std::vector<std::string> bodies;
   std::vector<std::string> coordinates;
   std::vector<std::string> dampers;
+  std::vector<std::string> constraints;
   std::vector<std::string> initial;
 };
 

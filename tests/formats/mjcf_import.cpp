@@ -120,8 +120,22 @@ TEST(MjcfImport, RefusesWithFileLineAndColumn) {
                  "t.xml:3:15: a free joint moves a body of <worldbody> only");
   expect_refused(world("  <body euler=\"0 0 1\"/>\n", "<compiler eulerseq=\"zyx\"/>"),
                  "t.xml:1:39: only eulerseq=\"xyz\" (MuJoCo's default) is supported yet");
-  expect_refused(world("  <body/>\n", "<equality/>"),
-                 "t.xml:1:19: closed loops from <equality> are not supported yet");
+  expect_refused(world("  <body name=\"a\"/>\n", "<equality><weld body1=\"a\"/></equality>"),
+                 "t.xml:1:29: <weld> equality constraints are not supported yet (<connect> and "
+                 "<joint> are)");
+  expect_refused(
+      world("  <body/>\n", "<equality><connect body1=\"b\" anchor=\"0 0 0\"/></equality>"),
+      "t.xml:1:45: no body named 'b' in <worldbody>");
+  expect_refused(world("  <body name=\"a\"/>\n",
+                       "<equality><connect body1=\"a\" body2=\"a\" "
+                       "anchor=\"0 0 0\"/></equality>"),
+                 "t.xml:1:29: a <connect> joins two different bodies");
+  expect_refused(world("  <body name=\"a\"/>\n", "<equality><connect body1=\"a\"/></equality>"),
+                 "t.xml:1:29: <connect> needs anchor=");
+  expect_refused(
+      world("  <body><joint name=\"s\" type=\"ball\"/>" + kInertial + "</body>\n",
+            "<equality><joint joint1=\"s\"/></equality>"),
+      "t.xml:1:44: a <joint> equality couples hinge and slide joints (this one is ball)");
   expect_refused(world("  <body/>\n", "<default><default/></default>"),
                  "t.xml:1:28: a nested <default> needs class=\"...\"");
   expect_refused(world("  <body/>\n", "<default/><default/>"),
@@ -144,6 +158,42 @@ TEST(MjcfImport, RefusesWithFileLineAndColumn) {
   expect_refused(world("  <body><joint type=\"slide\" damping=\"1\"/>" + kInertial + "</body>\n"),
                  "t.xml:3:38: joint damping on a slide joint is not supported yet");
   expect_refused("<robot name=\"r\"/>\n", "t.xml:1:1: expected <mujoco>, found <robot>");
+}
+
+// <equality>: a <connect> to another body (its point on that body where body1's anchor is at
+// qpos0, computed and said) and to the ground, a <joint> coupling, an inactive one left out.
+TEST(MjcfImport, EqualitiesAsPositionConstraints) {
+  const std::string text = world(
+      "  <body name=\"a\" pos=\"0 0 1\"><joint name=\"qa\"/>" + kInertial +
+          "</body>\n"
+          "  <body name=\"b\" pos=\"1 2 0\"><joint name=\"qb\" type=\"slide\"/>" +
+          kInertial + "</body>\n",
+      "<equality>\n"
+      "  <connect name=\"loop\" body1=\"a\" body2=\"b\" anchor=\"0.5 0 0\" solref=\"0.01 1\"/>\n"
+      "  <connect body1=\"a\" anchor=\"0 0 -1\"/>\n"
+      "  <joint name=\"gear\" joint1=\"qb\" joint2=\"qa\" polycoef=\"0.1 -2 0 0 0.5\"/>\n"
+      "  <joint joint1=\"qa\" active=\"false\"/>\n"
+      "</equality>");
+  const auto model = import_mjcf(text, "t.xml");
+  const std::string loop = "dot(a.frame_point([0.5, 0, 0]) - b.frame_point([-0.5, -2, 1]), E";
+  EXPECT_TRUE(has_line(model.yaml, "  - name: loop_1\n    position: " + loop + "1)")) << model.yaml;
+  EXPECT_TRUE(has_line(model.yaml, "  - name: loop_3\n    position: " + loop + "3)")) << model.yaml;
+  EXPECT_TRUE(has_line(model.yaml,
+                       "  - name: equality1_2\n    position: dot(a.frame_point([0, "
+                       "0, -1]) - [0, 0, 0], E2)"))
+      << model.yaml;
+  EXPECT_TRUE(has_line(model.yaml, "  - name: gear\n    position: qb - (0.1 + (-2)*qa + 0.5*qa^4)"))
+      << model.yaml;
+  EXPECT_EQ(model.yaml.find("equality3"), std::string::npos) << model.yaml;
+  ASSERT_EQ(model.notes.size(), 5u);
+  EXPECT_EQ(model.notes[0],
+            "t.xml:2:3: solref and solimp not applied: unidyn holds the constraint exactly");
+  EXPECT_EQ(model.notes[1],
+            "t.xml:2:3: <connect> 'loop' holds a.frame_point([0.5, 0, 0]) on b.frame_point([-0.5, "
+            "-2, 1]), the point where it is at qpos0 (computed)");
+  EXPECT_EQ(model.notes[2], "t.xml:3:3: an unnamed <connect> is named equality1 (its MuJoCo id)");
+  EXPECT_EQ(model.notes[4],
+            "t.xml:5:3: <joint> with active=\"false\": left out, as MuJoCo leaves it off");
 }
 
 // <default> classes: the file imports as the same file with every class's attributes written

@@ -96,7 +96,8 @@ Dynamics mujoco_dynamics(Mujoco& mj, const Eigen::VectorXd& q, const Eigen::Vect
 }
 
 // The model in both engines at 20 random states (engine_oracle::expect_agreement).
-void expect_agreement_with_mujoco(const std::string& file, Paths paths = Paths::both) {
+[[maybe_unused]] void expect_agreement_with_mujoco(const std::string& file,
+                                                   Paths paths = Paths::both) {
   Mujoco mj(engine_oracle::formats_model(file));
   const engine_oracle::LoadedFile unidyn = engine_oracle::load_and_compile(file, paths);
   expect_plain_tree(mj, unidyn.loaded.system);
@@ -114,7 +115,7 @@ void expect_agreement_with_mujoco(const std::string& file, Paths paths = Paths::
 
 #else
 
-void expect_agreement_with_mujoco(const std::string&, Paths = Paths::both) {
+[[maybe_unused]] void expect_agreement_with_mujoco(const std::string&, Paths = Paths::both) {
   GTEST_SKIP() << "MuJoCo is not installed (scripts/setup.sh test installs libmujoco-dev)";
 }
 

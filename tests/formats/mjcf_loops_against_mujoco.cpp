@@ -1,0 +1,178 @@
+// MJCF <equality> constraints (closed loops by <connect>, couplings by <joint>) read by unidyn and
+// by MuJoCo 2.2.2. MuJoCo holds them softly, so its qacc is not the oracle; its equality rows
+// are: Ψ(q) = efc_pos and A = ∂Ψ/∂q = efc_J at random q, and, at states on the constraints
+// (q by Newton's method on MuJoCo's rows, q̇ in the null space of its A), unidyn's q̈ solves
+//
+//   M q̈ − f ∈ range(Aᵀ)    (Lagrange's equations with constraint forces Aᵀ λ, book (3.8)),
+//   A q̈ + Ȧ q̇ = 0          (the constraints' second derivative),
+//
+// with MuJoCo's M (mj_fullM), f = −qfrc_bias and A, and Ȧ q̇ = d/ds [A(q + s q̇)] q̇ at s = 0 by
+// central differences of MuJoCo's A, Richardson-extrapolated (error O(h⁴), h = 1e-3).
+#include "mujoco_oracle.hpp"
+
+namespace unidyn {
+namespace {
+
+#ifdef UNIDYN_HAVE_MUJOCO
+
+using engine_oracle::formats_model;
+using engine_oracle::relative;
+using mujoco_oracle::Mujoco;
+using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// MuJoCo's equality rows at q: Ψ and A.
+struct Rows {
+  Eigen::VectorXd psi;
+  Eigen::MatrixXd A;
+};
+
+Rows mujoco_rows(Mujoco& mj, const Eigen::VectorXd& q) {
+  const mjModel* m = mj.model.get();
+  mjData* d = mj.data.get();
+  Eigen::Map<Eigen::VectorXd>(d->qpos, m->nq) = q;
+  Eigen::Map<Eigen::VectorXd>(d->qvel, m->nv).setZero();
+  mj_forward(m, d);
+  const Eigen::Map<const RowMatrix> J(d->efc_J, d->nefc, m->nv);
+  std::vector<int> rows;
+  for (int r = 0; r < d->nefc; ++r) {
+    if (d->efc_type[r] == mjCNSTR_EQUALITY) rows.push_back(r);
+  }
+  Rows out{Eigen::VectorXd(static_cast<Eigen::Index>(rows.size())),
+           Eigen::MatrixXd(static_cast<Eigen::Index>(rows.size()), m->nv)};
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    out.psi[static_cast<Eigen::Index>(k)] = d->efc_pos[rows[k]];
+    out.A.row(static_cast<Eigen::Index>(k)) = J.row(rows[k]);
+  }
+  return out;
+}
+
+// The model's hinges and slides, unidyn's coordinates in MuJoCo's order, and its equality rows
+// unidyn's constraints.
+struct Loaded {
+  Mujoco mj;
+  engine_oracle::LoadedFile unidyn;
+  explicit Loaded(const std::string& file)
+      : mj(formats_model(file)),
+        unidyn(engine_oracle::load_and_compile(file, engine_oracle::Paths::both)) {}
+};
+
+// A random q moved onto MuJoCo's constraints by Newton's method (the smallest step each time),
+// and a random q̇ in the null space of its A.
+bool random_state_on_constraints(Mujoco& mj, test::Random& random, Eigen::VectorXd& q,
+                                 Eigen::VectorXd& qdot) {
+  const int n = mj.dofs();
+  q = Eigen::VectorXd(n);
+  for (int i = 0; i < n; ++i) q[i] = random.uniform(-1.5, 1.5);
+  for (int k = 0; k < 60; ++k) {
+    const Rows rows = mujoco_rows(mj, q);
+    if (rows.psi.norm() < 1e-14) {
+      const Eigen::MatrixXd N = Eigen::FullPivLU<Eigen::MatrixXd>(rows.A).kernel();
+      Eigen::VectorXd c(N.cols());
+      for (Eigen::Index j = 0; j < c.size(); ++j) c[j] = random.uniform(-2.0, 2.0);
+      qdot = N * c;
+      return N.cols() == n - rows.A.rows();
+    }
+    q -= rows.A.completeOrthogonalDecomposition().solve(rows.psi);
+  }
+  return false;
+}
+
+// Ȧ q̇ by central differences of MuJoCo's A along q̇, Richardson-extrapolated.
+Eigen::VectorXd mujoco_rate_term(Mujoco& mj, const Eigen::VectorXd& q,
+                                 const Eigen::VectorXd& qdot) {
+  const auto D = [&](double h) -> Eigen::VectorXd {
+    return (mujoco_rows(mj, q + h * qdot).A - mujoco_rows(mj, q - h * qdot).A) * qdot / (2 * h);
+  };
+  const double h = 1e-3;
+  return (4 * D(h / 2) - D(h)) / 3;
+}
+
+// Ψ and A of unidyn's constraints against MuJoCo's rows at random q (on and off the constraints).
+void expect_same_rows(const std::string& file) {
+  Loaded loaded(file);
+  const CompiledSystem& compiled = *loaded.unidyn.compiled;
+  CompiledSystemData data = compiled.make_data();
+  const auto parameters = initial_state(loaded.unidyn.loaded.system, {}).parameters;
+  test::Random random;
+  double psi_error = 0, A_error = 0;
+  for (int k = 0; k < 20; ++k) {
+    Eigen::VectorXd q(loaded.mj.dofs());
+    for (Eigen::Index i = 0; i < q.size(); ++i) q[i] = random.uniform(-2.0, 2.0);
+    const Rows reference = mujoco_rows(loaded.mj, q);
+    ASSERT_EQ(static_cast<std::size_t>(reference.psi.size()), compiled.constraint_count());
+    compiled.constraints(0, q, Eigen::VectorXd::Zero(q.size()), parameters, data);
+    psi_error = std::max(psi_error, relative(data.constraint_position, reference.psi));
+    A_error = std::max(A_error, relative(data.constraint_matrix, reference.A));
+  }
+  EXPECT_LT(psi_error, 1e-13);
+  EXPECT_LT(A_error, 1e-13);
+  std::printf("%s against MuJoCo's equality rows: Psi %.3g, A %.3g relative\n", file.c_str(),
+              psi_error, A_error);
+}
+
+// unidyn's q̈ in MuJoCo's Lagrange's equations and constraints, at 20 states on the constraints.
+void expect_constrained_accelerations(const std::string& file) {
+  Loaded loaded(file);
+  const CompiledSystem& compiled = *loaded.unidyn.compiled;
+  CompiledSystemData data = compiled.make_data();
+  const auto parameters = initial_state(loaded.unidyn.loaded.system, {}).parameters;
+  Mujoco& mj = loaded.mj;
+  test::Random random;
+  double force_error = 0, constraint_error = 0;
+  for (int k = 0; k < 20; ++k) {
+    Eigen::VectorXd q, qdot, qddot, lambda;
+    ASSERT_TRUE(random_state_on_constraints(mj, random, q, qdot)) << "state " << k;
+    compiled.solve(0, q, qdot, parameters, qddot, lambda, data);
+    const Eigen::VectorXd rate_term = mujoco_rate_term(mj, q, qdot);
+    Eigen::Map<Eigen::VectorXd>(mj.data->qvel, mj.dofs()) = qdot;
+    const Rows rows = mujoco_rows(mj, q);
+    Eigen::Map<Eigen::VectorXd>(mj.data->qvel, mj.dofs()) = qdot;
+    mj_forward(mj.model.get(), mj.data.get());
+    RowMatrix M(mj.dofs(), mj.dofs());
+    mj_fullM(mj.model.get(), M.data(), mj.data->qM);
+    const Eigen::VectorXd f = -Eigen::Map<const Eigen::VectorXd>(mj.data->qfrc_bias, mj.dofs());
+    // M q̈ − f has no part along the motions the constraints allow (the null space of A)
+    const Eigen::MatrixXd N = Eigen::FullPivLU<Eigen::MatrixXd>(rows.A).kernel();
+    const Eigen::VectorXd residual = M * qddot - f;
+    force_error =
+        std::max(force_error, (N.transpose() * residual).norm() / ((M * qddot).norm() + f.norm()));
+    constraint_error = std::max(constraint_error, (rows.A * qddot + rate_term).norm() /
+                                                      ((rows.A * qddot).norm() + rate_term.norm()));
+  }
+  EXPECT_LT(force_error, 1e-12);
+  EXPECT_LT(constraint_error, 1e-10);  // the differences. error
+  test::record("force_error", force_error);
+  test::record("constraint_error", constraint_error);
+  std::printf(
+      "%s against MuJoCo: M q'' - f off range(A^T) by %.3g, A q'' + A' q' by %.3g relative\n",
+      file.c_str(), force_error, constraint_error);
+}
+
+// A spatial linkage closed by a <connect>: its three rows, the point on the rocker from qpos0.
+TEST(MjcfLoopsAgainstMujoco, ConnectRowsAreMujocos) {
+  expect_same_rows("spatial-loop.xml");
+}
+
+TEST(MjcfLoopsAgainstMujoco, ConnectAccelerationsSolveMujocosEquations) {
+  expect_constrained_accelerations("spatial-loop.xml");
+}
+
+// <joint> equalities: a quadratic coupling of two joints, and a joint held at a0.
+TEST(MjcfLoopsAgainstMujoco, JointCouplingRowsAreMujocos) {
+  expect_same_rows("coupled-pendulums.xml");
+}
+
+TEST(MjcfLoopsAgainstMujoco, JointCouplingAccelerationsSolveMujocosEquations) {
+  expect_constrained_accelerations("coupled-pendulums.xml");
+}
+
+#else
+
+TEST(MjcfLoopsAgainstMujoco, NeedsMujoco) {
+  GTEST_SKIP() << "MuJoCo is not installed (scripts/setup.sh test installs libmujoco-dev)";
+}
+
+#endif
+
+}  // namespace
+}  // namespace unidyn
