@@ -213,6 +213,13 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion* gi
     dynamics_ = assembled_dynamics_tape(tape_inputs(system, false), equations, *assembly_);
   } else if (!tree_.tree) {
     dynamics_ = dynamics_tape(system, equations);
+  } else if (closes_loops()) {
+    // loops closed over a tree: the dynamics tape gives the rows A and b alone (M and f are the
+    // tree's)
+    EquationsOfMotion rows;
+    rows.constraint_matrix = equations.constraint_matrix;
+    rows.constraint_bias = equations.constraint_bias;
+    dynamics_ = with_constraint_rows({}, evaluation_form(rows), tape_inputs(system, false));
   }
   constraints_ = compile_constraints(system, equations);
   // a tree's energies are its own (TreeEvaluation::energies): the tape computes the outputs
@@ -287,7 +294,10 @@ bool CompiledSystem::compile_in_background(const NativeOptions& native_options) 
 
 std::string CompiledSystem::evaluation() const {
   const std::string tree =
-      tree_.tree ? "articulated-body algorithm over the tree, outputs by " : "";
+      closes_loops() ? "composite-rigid-body M and Newton-Euler forces over the tree, loops "
+                       "closed by the constraints, rows and outputs by "
+      : tree_.tree   ? "articulated-body algorithm over the tree, outputs by "
+                     : "";
   return tree + tape_evaluation();
 }
 
@@ -438,8 +448,12 @@ void CompiledSystem::mass_and_forcing(double t, StateRef q, StateRef qdot,
 void CompiledSystem::solve_tree(double t, StateRef q, StateRef qdot,
                                 std::span<const double> parameters, Eigen::VectorXd& qddot,
                                 Eigen::VectorXd& lambda, CompiledSystemData& data) const {
-  // the only constraints a tree has are its Euler parameters' unit norms: their multipliers are 0
-  // (tree/euler_parameter_joint.hpp)
+  if (closes_loops()) {
+    solve_loops(t, q, qdot, parameters, qddot, lambda, data);
+    return;
+  }
+  // the only constraints of a tree with Euler parameters are their unit norms: their multipliers
+  // are 0 (tree/euler_parameter_joint.hpp)
   lambda.setZero(static_cast<Eigen::Index>(m_));
   try {
     tree_.tree->accelerations(t, q, qdot, parameters, qddot, data.tree);
@@ -453,6 +467,26 @@ void CompiledSystem::solve_tree(double t, StateRef q, StateRef qdot,
   if (!qddot.allFinite()) {
     throw NotFiniteState("the accelerations are not finite at t = " + std::to_string(t));
   }
+}
+
+void CompiledSystem::solve_loops(double t, StateRef q, StateRef qdot,
+                                 std::span<const double> parameters, Eigen::VectorXd& qddot,
+                                 Eigen::VectorXd& lambda, CompiledSystemData& data) const {
+  // M by the composite-rigid-body algorithm and f = τ − b by Newton–Euler over the tree
+  tree_.tree->mass_and_forcing(t, q, qdot, parameters, data.mass_matrix, data.forcing, data.tree);
+  if (!data.mass_matrix.allFinite() || !data.forcing.allFinite()) {
+    throw NotFiniteState("the mass matrix is not finite at t = " + std::to_string(t));
+  }
+  const auto N = static_cast<Eigen::Index>(n_), Mc = static_cast<Eigen::Index>(m_);
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+      data.mass_factor.data(), N, N) = data.mass_matrix;
+  // the rows A q̈ + b = 0, then (3.8)'s M q̈ = f + Aᵀ λ solved with them
+  const double* rows = evaluate_at(dynamics_, t, q, qdot, parameters, data);
+  data.constraint_matrix =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          rows, Mc, N);
+  data.constraint_bias = Eigen::Map<const Eigen::VectorXd>(rows + m_ * n_, Mc);
+  solve_with(t, data.constraint_matrix, data.constraint_bias, nullptr, qddot, lambda, data);
 }
 
 void CompiledSystem::solve(double t, StateRef q, StateRef qdot, std::span<const double> parameters,

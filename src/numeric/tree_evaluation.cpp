@@ -74,9 +74,11 @@ tree::TreeModel tree_shape(const System& system, std::string& why_not) {
   return shape;
 }
 
-// Whether every constraint is the unit norm e · e = 1 of a ball or floating joint's Euler
-// parameters ("" in why_not when so): a constraint of the description, whose multiplier is 0.
-bool only_unit_norms(const System& system, std::string& why_not) {
+// Whether the constraints are ones the recursive path takes ("" in why_not when so): on a tree
+// with ball or floating joints, only their Euler parameters' unit norms (constraints of the
+// description, whose multipliers are 0); on another, bilateral constraints (loops closed over the
+// tree: q̈ from its M and f and the rows, CompiledSystem::solve_tree) without friction or a switch.
+bool takes_constraints(const System& system, const tree::TreeModel& shape, std::string& why_not) {
   std::vector<Expr> norms;
   for (const Body& body : system.bodies) {
     const TreeJoint& joint = *body.joint;
@@ -87,15 +89,17 @@ bool only_unit_norms(const System& system, std::string& why_not) {
     }
     norms.push_back(norm);
   }
+  const bool euler = tree::has_euler_parameters(shape);
   for (const Constraint& c : system.constraints) {
     const bool unit =
         c.parametrisation && std::any_of(norms.begin(), norms.end(), [&](const Expr& n) {
           return (c.expression - n).expand().is_zero();
         });
-    if (!unit) {
-      why_not = "it has the constraint '" + c.name + "'";
-      return false;
-    }
+    if (euler && !unit) why_not = "it has the constraint '" + c.name + "'";
+    if (c.unilateral) why_not = "its constraint '" + c.name + "' is unilateral";
+    if (c.friction) why_not = "its constraint '" + c.name + "' is rough";
+    if (!c.off_while.empty()) why_not = "its constraint '" + c.name + "' switches";
+    if (!why_not.empty()) return false;
   }
   return true;
 }
@@ -222,7 +226,7 @@ TreePlan plan_tree(const System& system) {
   if (system.bodies.empty()) why_not = "it has no bodies";
   if (!why_not.empty()) return plan;
   tree::TreeModel shape = tree_shape(system, why_not);
-  if (!why_not.empty() || !only_unit_norms(system, why_not)) return plan;
+  if (!why_not.empty() || !takes_constraints(system, shape, why_not)) return plan;
   const std::vector<Expr> tau = joint_forces(system, why_not);
   if (!why_not.empty() || !no_forces_on_euler_joints(shape, tau, system, why_not)) return plan;
   const std::vector<Expr> inputs = tape_inputs(system, false);

@@ -263,6 +263,10 @@ TEST(TreeEvaluation, OtherSystemsKeepTheCompiledEquationsWithTheReason) {
             "a force acts on the coordinates of body 'torso''s ball or floating joint");
   EXPECT_EQ(why_not(kFloatingTree + "constraints:\n  - {name: level, position: arm - 0.1}\n"),
             "it has the constraint 'level'");
+  // a loop closed over a tree without Euler parameters is the tree's (CompiledSystem::solve_loops)
+  EXPECT_EQ(why_not(arm + "constraints:\n  - {name: stop, position: a - 0.1}\n"), "");
+  EXPECT_EQ(why_not(arm + "constraints:\n  - {name: stop, position: a - 0.1, unilateral: true}\n"),
+            "its constraint 'stop' is unilateral");
 }
 
 }  // namespace

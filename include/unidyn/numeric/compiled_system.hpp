@@ -178,6 +178,11 @@ class CompiledSystem {
   // when the system is not such a tree.
   bool recursive() const { return tree_.tree != nullptr; }
   const std::string& why_not_recursive() const { return tree_.why_not; }
+  // Whether the tree's loops are closed by constraints: q̈ and λ then come from the tree's M
+  // (composite-rigid-body algorithm), its f (Newton–Euler) and the constraint rows.
+  bool closes_loops() const {
+    return tree_.tree != nullptr && m_ > 0 && tree_.tree->forms_mass_matrix();
+  }
   const Tape& constraint_tape() const { return constraints_; }
 
   // The rough contacts' numbers at (t, q, q̇) into data.friction.
@@ -229,6 +234,9 @@ class CompiledSystem {
   // M, f, A and b at the state from the dynamics tape (or its assembly) into data.
   void evaluate_dynamics(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
                          CompiledSystemData& data) const;
+  // solve() over a tree closed by constraints (closes_loops()).
+  void solve_loops(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
+                   Eigen::VectorXd& qddot, Eigen::VectorXd& lambda, CompiledSystemData& data) const;
   // solve() by the articulated-body algorithm (recursive()).
   void solve_tree(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
                   Eigen::VectorXd& qddot, Eigen::VectorXd& lambda, CompiledSystemData& data) const;
@@ -245,7 +253,8 @@ class CompiledSystem {
   TreePlan tree_;
   // M and c from the partial velocities; null: M and f on the tape
   std::shared_ptr<const InertiaAssembly> assembly_;
-  // [t, q, q̇, p] → M, f, A, b; or, with assembly_, → Φ − ∂U/∂q, the assembly's values, A, b
+  // [t, q, q̇, p] → M, f, A, b; or, with assembly_, → Φ − ∂U/∂q, the assembly's values, A, b; of
+  // a tree closed by constraints (closes_loops()) → A, b; of another tree, none
   Tape dynamics_;
   // with assembly_: the M, f, A, b tape, compiled at the first call of dynamics()
   std::shared_ptr<DeferredTape> full_dynamics_;

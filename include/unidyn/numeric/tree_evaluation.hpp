@@ -39,7 +39,8 @@ struct TreePlan {
 
 // The system as a tree when it is one: every body on a fixed, revolute, prismatic, ball or
 // floating joint, every coordinate one joint's, no particles or impulses, no constraint but the
-// Euler parameters' unit norms (their multipliers are 0: tree/euler_parameter_joint.hpp), and no
+// Euler parameters' unit norms (their multipliers are 0: tree/euler_parameter_joint.hpp) or, on a
+// tree without them, bilateral constraints without friction (loops closed over the tree), and no
 // force but gravity, potentials in the one-coordinate joints' coordinates and torsion springs and
 // dampers on joint angles.
 TreePlan plan_tree(const System& system);
