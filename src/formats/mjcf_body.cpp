@@ -82,19 +82,21 @@ void refuse_nonzero(const MjcfContext& context, const XMLElement& joint) {
   }
 }
 
-// damping on a hinge: a torsion damper; on another joint refused.
+// damping on a hinge: a torsion damper; on a slide a slide damper; on another joint refused.
 void read_damping(MjcfContext& context, const MjcfJoint& joint) {
   const auto damping = context.source.numbers(*joint.element, "damping", 1);
   if (!damping || (*damping)[0].value == 0) return;
   if ((*damping)[0].value < 0) {
     context.source.refuse(*joint.element, "damping", "damping must not be negative");
   }
-  if (joint.type != "hinge") {
+  if (joint.type != "hinge" && joint.type != "slide") {
     context.source.refuse(*joint.element, "damping",
                           "joint damping on a " + joint.type + " joint is not supported yet");
   }
-  context.written.dampers.push_back("  - torsion_damper: {angle: " + joint.coordinates[0] +
-                                    ", coefficient: " + (*damping)[0].text + "}");
+  context.written.dampers.push_back(
+      std::string(joint.type == "slide" ? "  - slide_damper: {displacement: "
+                                        : "  - torsion_damper: {angle: ") +
+      joint.coordinates[0] + ", coefficient: " + (*damping)[0].text + "}");
 }
 
 // The body's <joint> and <freejoint> elements in order: type (hinge by default), anchor, names.

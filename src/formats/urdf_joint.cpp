@@ -55,8 +55,8 @@ std::string motion_text(const JointText& text, const std::string& type) {
   return ", " + type + ": [" + list + "]";
 }
 
-// <dynamics damping friction>: damping on a revolute or continuous joint is a torsion damper;
-// anything else that changes the dynamics is refused.
+// <dynamics damping friction>: damping on a revolute or continuous joint is a torsion damper, on a
+// prismatic joint a slide damper; anything else that changes the dynamics is refused.
 std::string damper_text(const XmlSource& source, const UrdfJoint& joint,
                         const std::vector<std::string>& coordinates) {
   const XMLElement* dynamics = joint.element->FirstChildElement("dynamics");
@@ -67,13 +67,15 @@ std::string damper_text(const XmlSource& source, const UrdfJoint& joint,
   }
   const auto damping = source.numbers(*dynamics, "damping", 1);
   if (!damping || (*damping)[0].value == 0) return "";
-  if (joint.type != "revolute" && joint.type != "continuous") {
+  const bool slides = joint.type == "prismatic";
+  if (joint.type != "revolute" && joint.type != "continuous" && !slides) {
     source.refuse(*dynamics, "damping",
                   "joint damping on a " + joint.type + " joint is not supported yet");
   }
   if ((*damping)[0].value < 0) source.refuse(*dynamics, "damping", "damping must not be negative");
-  return "  - torsion_damper: {angle: " + coordinates[0] + ", coefficient: " + (*damping)[0].text +
-         "}";
+  return std::string(slides ? "  - slide_damper: {displacement: "
+                            : "  - torsion_damper: {angle: ") +
+         coordinates[0] + ", coefficient: " + (*damping)[0].text + "}";
 }
 
 // The rpy angles, each typed as a rounded multiple of π/4 written as that multiple

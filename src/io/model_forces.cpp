@@ -236,6 +236,34 @@ ForceElement ModelReader::read_gravitation(const YAML::Node& spec, const System&
   return gravitation(system, *p1, *p2, G);
 }
 
+// slide_damper: {displacement: d, coefficient: c}: −c ḋ along the axis of d's prismatic joint.
+ForceElement ModelReader::read_slide_damper(const YAML::Node& spec, const System& system,
+                                            const Scope& scope) {
+  expect_map(spec, "slide_damper");
+  expect_keys(spec, {"displacement", "coefficient"}, "slide_damper");
+  if (!spec["displacement"] || !spec["coefficient"]) {
+    fail(spec,
+         "a slide_damper needs displacement: (a prismatic joint's coordinate) and "
+         "coefficient:");
+  }
+  const auto d = system.find_coordinate(scalar(spec["displacement"], "displacement"));
+  if (!d) fail(spec["displacement"], "displacement: must name a coordinate");
+  std::optional<std::size_t> body;
+  for (std::size_t b = 0; b < system.bodies.size(); ++b) {
+    const auto& joint = system.bodies[b].joint;
+    if (joint && joint->kind == TreeJoint::Kind::prismatic && joint->coordinates.front() == *d) {
+      body = b;
+    }
+  }
+  if (!body) {
+    fail(spec["displacement"], "a slide_damper needs the coordinate of a prismatic joint ('" +
+                                   system.coordinates()[*d].name + "' is not one)");
+  }
+  const Expr c = scalar_expr(spec["coefficient"], scope, "coefficient");
+  expect_state_only(spec["coefficient"], c, system, "a damping coefficient");
+  return slide_damper(system, *body, c);
+}
+
 // One force of the list, {kind: spec}, by its kind.
 ForceElement ModelReader::read_force(const YAML::Node& entry, const System& system) {
   const std::string kind = entry.begin()->first.Scalar();
@@ -254,6 +282,7 @@ ForceElement ModelReader::read_force(const YAML::Node& entry, const System& syst
   if (kind == "torsion_spring" || kind == "torsion_damper") {
     return read_torsion(kind, spec, system, scope);
   }
+  if (kind == "slide_damper") return read_slide_damper(spec, system, scope);
   if (kind == "potential") {
     const Expr U = scalar_expr(spec, scope, "potential");
     expect_state_only(spec, U, system, "a potential U(q, t)");
@@ -263,7 +292,7 @@ ForceElement ModelReader::read_force(const YAML::Node& entry, const System& syst
   fail(entry.begin()->first, "unknown force '" + kind +
                                  "' (expected gravity, spring, damper, force, moment, "
                                  "potential, gravitation, gravity_gradient, "
-                                 "torsion_spring or torsion_damper)");
+                                 "torsion_spring, torsion_damper or slide_damper)");
 }
 
 void ModelReader::read_forces(const YAML::Node& node, System& system) {
@@ -272,7 +301,7 @@ void ModelReader::read_forces(const YAML::Node& node, System& system) {
     if (!entry.IsMap() || entry.size() != 1) {
       fail(entry,
            "each force is one of: gravity, spring, damper, force, moment, potential, gravitation, "
-           "gravity_gradient, torsion_spring, torsion_damper");
+           "gravity_gradient, torsion_spring, torsion_damper, slide_damper");
     }
     ForceElement element;
     try {

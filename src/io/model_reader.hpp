@@ -276,6 +276,7 @@ class ModelReader {
   ForceElement read_moment(const YAML::Node& spec, const System& system, const Scope& scope);
   ForceElement read_gravity_gradient(const YAML::Node& spec, const System& system,
                                      const Scope& scope);
+  ForceElement read_slide_damper(const YAML::Node& spec, const System& system, const Scope& scope);
   ForceElement read_torsion(const std::string& kind, const YAML::Node& spec, const System& system,
                             const Scope& scope);
   ForceElement read_gravitation(const YAML::Node& spec, const System& system, const Scope& scope);

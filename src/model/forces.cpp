@@ -167,4 +167,23 @@ ForceElement torsion_damper(const System& system, std::size_t angle,
   return element;
 }
 
+ForceElement slide_damper(const System& system, std::size_t body, const Expr& c) {
+  ForceElement element = new_element(ForceElement::Kind::slide_damper, "slide_damper", false);
+  const Body& b = system.bodies[body];
+  const std::size_t d = b.joint->coordinates.front();
+  element.angle = d;
+  element.coefficient = c;
+  // F = −c ḋ u at o on B; −F on the parent at the joint's origin o_P + Q_P p, a point of the parent
+  // on the same line (o = o_P + Q_P p + d u): the same moment as at o, and its partial velocities
+  // are the parent's (the virtual work of (3.7) takes a material point)
+  const VectorExpr F = (-c * system.coordinates()[d].rate) * times(b.rotation, b.joint->axis);
+  element.body_forces.push_back({body, b.origin, F});
+  if (b.joint->parent) {
+    const Body& parent = system.bodies[*b.joint->parent];
+    element.body_forces.push_back(
+        {*b.joint->parent, parent.origin + times(parent.rotation, b.joint->origin), Expr(-1) * F});
+  }
+  return element;
+}
+
 }  // namespace unidyn

@@ -131,8 +131,8 @@ std::vector<Expr> link_constants(const System& system) {
   return out;
 }
 
-// τ: −∂U/∂q of the potentials and torsion springs, −c q̇ of the torsion dampers ("" in why_not
-// when every force is one of these or gravity).
+// τ: −∂U/∂q of the potentials and torsion springs, −c q̇ of the torsion and slide dampers ("" in
+// why_not when every force is one of these or gravity).
 std::vector<Expr> joint_forces(const System& system, std::string& why_not) {
   const auto& q = system.coordinates();
   std::vector<Expr> tau(q.size(), Expr(0));
@@ -141,7 +141,7 @@ std::vector<Expr> joint_forces(const System& system, std::string& why_not) {
     if (f.kind == Kind::gravity) continue;
     if (f.kind == Kind::potential || (f.kind == Kind::torsion_spring && f.angle)) {
       for (std::size_t k = 0; k < q.size(); ++k) tau[k] -= derivative(f.potential, q[k].value);
-    } else if (f.kind == Kind::torsion_damper && f.angle) {
+    } else if ((f.kind == Kind::torsion_damper || f.kind == Kind::slide_damper) && f.angle) {
       tau[*f.angle] -= f.coefficient * q[*f.angle].rate;
     } else {
       why_not =

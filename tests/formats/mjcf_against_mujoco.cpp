@@ -21,6 +21,12 @@ TEST(MjcfAgainstMujoco, CartPoleMassMatrixBiasAndAccelerations) {
   expect_agreement_with_mujoco("cart-pole.xml");
 }
 
+// Damping in the slide (a slide damper) and in the hinge (a torsion damper): MuJoCo's passive
+// forces −b q̇.
+TEST(MjcfAgainstMujoco, DampedCartPoleMassMatrixForcesAndAccelerations) {
+  expect_agreement_with_mujoco("damped-cart-pole.xml");
+}
+
 // Two joints in one body, composed in order about their anchors; a turned body (quat, euler).
 TEST(MjcfAgainstMujoco, TwoJointsInOneBodyMassMatrixBiasAndAccelerations) {
   expect_agreement_with_mujoco("two-joints-in-one-body.xml");

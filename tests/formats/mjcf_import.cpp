@@ -155,8 +155,8 @@ TEST(MjcfImport, RefusesWithFileLineAndColumn) {
                  "t.xml:3:23: class 'leg' is not defined in <default>");
   expect_refused(world("  <body><joint stiffness=\"2\"/>" + kInertial + "</body>\n"),
                  "t.xml:3:27: joint stiffness is not supported yet");
-  expect_refused(world("  <body><joint type=\"slide\" damping=\"1\"/>" + kInertial + "</body>\n"),
-                 "t.xml:3:38: joint damping on a slide joint is not supported yet");
+  expect_refused(world("  <body><joint type=\"ball\" damping=\"1\"/>" + kInertial + "</body>\n"),
+                 "t.xml:3:37: joint damping on a ball joint is not supported yet");
   expect_refused("<robot name=\"r\"/>\n", "t.xml:1:1: expected <mujoco>, found <robot>");
 }
 

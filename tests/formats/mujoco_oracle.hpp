@@ -45,8 +45,8 @@ struct Mujoco {
   }
 };
 
-// The oracle measures the rigid tree alone: gravity −9.81 E3, hinges and slides without
-// damping, armature, friction loss or stiffness; and its dofs are unidyn's coordinates, in order.
+// The oracle measures the rigid tree and its joints' damping: gravity −9.81 E3, hinges and slides
+// without armature, friction loss or stiffness; and its dofs are unidyn's coordinates, in order.
 void expect_plain_tree(const Mujoco& mj, const System& system) {
   const mjModel& m = *mj.model;
   EXPECT_EQ(m.opt.gravity[0], 0.0);
@@ -58,7 +58,7 @@ void expect_plain_tree(const Mujoco& mj, const System& system) {
     EXPECT_EQ(m.jnt_stiffness[j], 0.0) << j;
   }
   for (int i = 0; i < m.nv; ++i) {
-    EXPECT_EQ(m.dof_damping[i] + m.dof_armature[i] + m.dof_frictionloss[i], 0.0) << i;
+    EXPECT_EQ(m.dof_armature[i] + m.dof_frictionloss[i], 0.0) << i;
   }
   ASSERT_EQ(system.coordinates().size(), static_cast<std::size_t>(m.nv));
   for (int i = 0; i < m.nv; ++i) {
@@ -79,8 +79,9 @@ void random_state(const Mujoco& mj, test::Random& random, Eigen::VectorXd& q,
   }
 }
 
-// MuJoCo's: M from its sparse qM, f = −qfrc_bias (Coriolis, centripetal and gravity forces; no
-// passive, applied or actuator force), q̈ = qacc; no constraint row may be active.
+// MuJoCo's: M from its sparse qM, f = qfrc_passive − qfrc_bias (the joints' damping −b q̇;
+// Coriolis, centripetal and gravity forces; no applied or actuator force), q̈ = qacc; no
+// constraint row may be active.
 Dynamics mujoco_dynamics(Mujoco& mj, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
   const mjModel* m = mj.model.get();
   mjData* d = mj.data.get();
@@ -91,7 +92,9 @@ Dynamics mujoco_dynamics(Mujoco& mj, const Eigen::VectorXd& q, const Eigen::Vect
   EXPECT_EQ(d->nefc, 0);
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> M(n, n);
   mj_fullM(m, M.data(), d->qM);
-  return {M, -Eigen::Map<const Eigen::VectorXd>(d->qfrc_bias, n),
+  return {M,
+          Eigen::Map<const Eigen::VectorXd>(d->qfrc_passive, n) -
+              Eigen::Map<const Eigen::VectorXd>(d->qfrc_bias, n),
           Eigen::Map<const Eigen::VectorXd>(d->qacc, n)};
 }
 

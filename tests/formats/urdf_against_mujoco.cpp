@@ -29,6 +29,12 @@ TEST(UrdfAgainstMujoco, PrismaticAndFixedMassMatrixBiasAndAccelerations) {
   expect_agreement_with_mujoco("prismatic-and-fixed.urdf");
 }
 
+// <dynamics damping> in a continuous joint (a torsion damper) and a prismatic one on a tilted rail
+// (a slide damper): MuJoCo's passive forces −b q̇.
+TEST(UrdfAgainstMujoco, DampedJointsMassMatrixForcesAndAccelerations) {
+  expect_agreement_with_mujoco("damped-joints.urdf");
+}
+
 TEST(UrdfAgainstMujoco, FullInertiaMassMatrixBiasAndAccelerations) {
   expect_agreement_with_mujoco("full-inertia.urdf");
 }

@@ -201,9 +201,9 @@ TEST(UrdfImport, RefusesWithFileLineAndColumn) {
   expect_refused(robot(kLinkA + joint("j", "revolute", "a", "b", "<mimic joint=\"k\"/>") +
                        "  <link name=\"b\"/>\n"),
                  "t.urdf:3:70: <mimic> is not supported");
-  expect_refused(robot(kLinkA + joint("j", "prismatic", "a", "b", "<dynamics damping=\"1\"/>") +
+  expect_refused(robot(kLinkA + joint("j", "floating", "a", "b", "<dynamics damping=\"1\"/>") +
                        "  <link name=\"b\"/>\n"),
-                 "t.urdf:3:90: joint damping on a prismatic joint is not supported yet");
+                 "t.urdf:3:89: joint damping on a floating joint is not supported yet");
   expect_refused(robot(kLinkA + joint("j", "revolute", "a", "b", "<axis xyz=\"0 0 0\"/>") +
                        "  <link name=\"b\"/>\n"),
                  "t.urdf:3:81: a joint's axis must not be zero");

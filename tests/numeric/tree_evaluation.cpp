@@ -48,6 +48,7 @@ forces:
   - torsion_spring: {angle: elbow, stiffness: K, rest_angle: 0.2}
   - torsion_damper: {angle: shoulder, coefficient: c}
   - potential: 40*slide^2/2
+  - slide_damper: {displacement: slide, coefficient: 3*c}
 )";
 
 // The recursive algorithms at every size (recursive), or the compiled equations.

@@ -62,6 +62,13 @@ ForceElement torsion_spring(const System& system, std::size_t angle,
 ForceElement torsion_damper(const System& system, std::size_t angle,
                             const std::vector<AngleTorque>& unit_torque, const Expr& c);
 
+// A damper in body B's prismatic joint (its displacement d along the unit axis u = Q_B a): the
+// force −c ḋ u on B at its frame's origin o and c ḋ u on its parent at the joint's origin, a point
+// of the parent on the same line (none on the ground). The two bodies turn together, so the
+// points' relative velocity along u is ḋ: the power is −c ḋ², the generalised force −c ḋ on d
+// alone.
+ForceElement slide_damper(const System& system, std::size_t body, const Expr& c);
+
 // A potential energy U(q, t) given directly in the coordinates.
 ForceElement coordinate_potential(const Expr& U);
 

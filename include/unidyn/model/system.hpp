@@ -101,7 +101,8 @@ struct ForceElement {
     moment,
     gravity_gradient,
     torsion_spring,
-    torsion_damper
+    torsion_damper,
+    slide_damper
   };
   Kind kind;
   std::string label;
@@ -115,7 +116,8 @@ struct ForceElement {
   std::vector<BodyForce> body_forces;
   std::vector<BodyMoment> moments;
   // What a recursive evaluation of a tree needs (numeric/tree_dynamics.hpp): gravity's uniform
-  // field g; a torsion spring's or damper's angle (a coordinate) and a damper's coefficient c.
+  // field g; a torsion spring's or damper's angle (a coordinate; a slide damper's displacement) and
+  // a damper's coefficient c.
   VectorExpr field;
   std::optional<std::size_t> angle;
   Expr coefficient = 0;
