@@ -94,9 +94,7 @@ void read_damping(MjcfContext& context, const MjcfJoint& joint) {
                           "joint damping on a " + joint.type + " joint is not supported yet");
   }
   context.written.dampers.push_back(
-      std::string(joint.type == "slide" ? "  - slide_damper: {displacement: "
-                                        : "  - torsion_damper: {angle: ") +
-      joint.coordinates[0] + ", coefficient: " + (*damping)[0].text + "}");
+      damper_line(joint.type == "slide", joint.coordinates[0], (*damping)[0].text));
 }
 
 // The body's <joint> and <freejoint> elements in order: type (hinge by default), anchor, names.
@@ -256,7 +254,7 @@ void write_body(MjcfContext& context, const XMLElement& body, const std::string&
       parent_frame != context.frames.end() ? parent_frame->second : Eigen::Isometry3d::Identity();
   frame = frame * Eigen::Translation3d(pos[0].value, pos[1].value, pos[2].value) * turned.value;
   context.frames[name] = frame;
-  if (given) context.named_bodies[given] = {name, frame};
+  if (given) context.named_bodies[given] = name;
   const auto joints = read_joints(context, body, parent.empty());
   const std::string line = place_body(context, name, parent, pos, turned, joints);
   auto& bodies = context.written.bodies;

@@ -31,31 +31,36 @@ std::string equality_name(MjcfContext& context, const XMLElement& element) {
   return name;
 }
 
-// A body named by the attribute (nullptr for the ground: left out, or "world").
-const MjcfBodyFrame* named_body(const MjcfContext& context, const XMLElement& element,
-                                const char* attribute) {
+// The model name of the body named by the attribute ("" for the ground: left out, or "world").
+std::string named_body(const MjcfContext& context, const XMLElement& element,
+                       const char* attribute) {
   const char* name = element.Attribute(attribute);
-  if (!name || std::strcmp(name, "world") == 0) return nullptr;
+  if (!name || std::strcmp(name, "world") == 0) return "";
   const auto found = context.named_bodies.find(name);
   if (found == context.named_bodies.end()) {
     context.source.refuse(element, attribute,
                           "no body named '" + printable(name) + "' in <worldbody>");
   }
-  return &found->second;
+  return found->second;
 }
 
 // The point X on a body's frame as the model's text (its numbers on the ground for the ground).
-std::string point_text(const MjcfBodyFrame* body, const std::vector<std::string>& X) {
+std::string point_text(const std::string& body, const std::vector<std::string>& X) {
   const std::string vector = "[" + joined(X) + "]";
-  return body ? body->name + ".frame_point(" + vector + ")" : vector;
+  return body.empty() ? vector : body + ".frame_point(" + vector + ")";
+}
+
+// A body's frame at qpos0 (the ground's for "").
+Eigen::Isometry3d frame_at_qpos0(const MjcfContext& context, const std::string& body) {
+  return body.empty() ? Eigen::Isometry3d::Identity() : context.frames.at(body);
 }
 
 // <connect>: body1's anchor held on body2's point that coincides with it at qpos0.
 void write_connect(MjcfContext& context, const XMLElement& connect, const std::string& name) {
   const XmlSource& source = context.source;
   source.required(connect, "body1");
-  const MjcfBodyFrame* body1 = named_body(context, connect, "body1");
-  const MjcfBodyFrame* body2 = named_body(context, connect, "body2");
+  const std::string body1 = named_body(context, connect, "body1");
+  const std::string body2 = named_body(context, connect, "body2");
   if (body1 == body2) {
     source.refuse(connect, "a <connect> joins two different bodies (one may be the world)");
   }
@@ -68,9 +73,8 @@ void write_connect(MjcfContext& context, const XMLElement& connect, const std::s
     on_body1[static_cast<Eigen::Index>(i)] = anchor[i].value;
   }
   // body2's point: where body1's anchor is at qpos0, on body2's frame
-  const Eigen::Isometry3d frame1 = body1 ? body1->pose : Eigen::Isometry3d::Identity();
-  const Eigen::Isometry3d frame2 = body2 ? body2->pose : Eigen::Isometry3d::Identity();
-  const Eigen::Vector3d on_body2 = frame2.inverse() * (frame1 * on_body1);
+  const Eigen::Vector3d on_body2 =
+      frame_at_qpos0(context, body2).inverse() * (frame_at_qpos0(context, body1) * on_body1);
   std::vector<std::string> computed;
   for (Eigen::Index i = 0; i < 3; ++i) computed.push_back(exact_text(on_body2[i]));
   const std::string p1 = point_text(body1, typed), p2 = point_text(body2, computed);

@@ -11,13 +11,6 @@
 
 namespace unidyn::formats {
 
-// A named body's model name and its frame on the ground at MuJoCo's reference configuration qpos0
-// (hinges and slides at 0, balls unturned, a free body where the file puts it).
-struct MjcfBodyFrame {
-  std::string name;
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-};
-
 // A named joint's type and coordinates.
 struct MjcfJointCoordinates {
   std::string type;
@@ -36,9 +29,10 @@ struct MjcfContext {
   int bodies = 0;                 // MuJoCo's ids: the world is body 0
   int joints = 0;
   int equalities = 0;
-  // for <equality>: the bodies and joints by their names in the file, and each body's frame at
-  // qpos0 by its model name
-  std::map<std::string, MjcfBodyFrame> named_bodies{};
+  // for <equality>: the bodies' model names and the joints by their names in the file, and each
+  // body's frame on the ground at MuJoCo's reference configuration qpos0 (hinges and slides at 0,
+  // balls unturned, a free body where the file puts it) by its model name
+  std::map<std::string, std::string> named_bodies{};
   std::map<std::string, MjcfJointCoordinates> named_joints{};
   std::map<std::string, Eigen::Isometry3d> frames{};
 };

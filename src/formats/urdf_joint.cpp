@@ -73,9 +73,7 @@ std::string damper_text(const XmlSource& source, const UrdfJoint& joint,
                   "joint damping on a " + joint.type + " joint is not supported yet");
   }
   if ((*damping)[0].value < 0) source.refuse(*dynamics, "damping", "damping must not be negative");
-  return std::string(slides ? "  - slide_damper: {displacement: "
-                            : "  - torsion_damper: {angle: ") +
-         coordinates[0] + ", coefficient: " + (*damping)[0].text + "}";
+  return damper_line(slides, coordinates[0], (*damping)[0].text);
 }
 
 // The rpy angles, each typed as a rounded multiple of π/4 written as that multiple

@@ -96,6 +96,13 @@ void expect_realisable(const XmlSource& source, const tinyxml2::XMLElement& elem
   }
 }
 
+std::string damper_line(bool slides, const std::string& coordinate,
+                        const std::string& coefficient) {
+  return std::string(slides ? "  - slide_damper: {displacement: "
+                            : "  - torsion_damper: {angle: ") +
+         coordinate + ", coefficient: " + coefficient + "}";
+}
+
 std::string model_yaml(const ModelHeader& header, const Written& w) {
   const std::string article = header.format == "MJCF" ? "an " : "a ";
   std::string yaml = "# Written by `unidyn import` from " + article + header.format +

@@ -64,6 +64,9 @@ struct Written {
   std::vector<std::string> initial;
 };
 
+// A joint's damper as a force line: a slide damper in a sliding joint, else a torsion damper.
+std::string damper_line(bool slides, const std::string& coordinate, const std::string& coefficient);
+
 // The model's header and gravity: `format` ("URDF", "MJCF"), `parameters` ("{g: 9.81}") and the
 // gravity force's line ("  - gravity: -g*E3", or "" for none).
 struct ModelHeader {

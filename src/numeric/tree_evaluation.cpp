@@ -249,7 +249,8 @@ TreeEvaluation::TreeEvaluation(tree::TreeModel shape, Tape constants, Tape joint
       joint_forces_(std::move(joint_forces)),
       potentials_(std::move(potentials)),
       reference_(reference_coordinates(shape_)),
-      p_(parameters) {}
+      p_(parameters),
+      forms_mass_matrix_(!tree::has_euler_parameters(shape_)) {}
 
 TreeEvaluationData TreeEvaluation::make_data() const {
   TreeEvaluationData data;
@@ -315,10 +316,6 @@ void TreeEvaluation::energies(double t, tree::TreeVector q, tree::TreeVector qdo
   potentials_.evaluate(data.inputs, std::span(&other, 1), data.workspace);
   T = tree::tree_kinetic_energy(data.model, q, qdot, data.tree);
   U = tree::tree_gravity_potential(data.model, q, data.tree) + other;
-}
-
-bool TreeEvaluation::forms_mass_matrix() const {
-  return !tree::has_euler_parameters(shape_);
 }
 
 void TreeEvaluation::mass_and_forcing(double t, tree::TreeVector q, tree::TreeVector qdot,

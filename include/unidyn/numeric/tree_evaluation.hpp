@@ -62,7 +62,7 @@ class TreeEvaluation {
                 TreeEvaluationData& data) const;
   // Whether mass_and_forcing() is defined: not for a ball or floating joint (the model
   // language's M in Euler parameters is not the tree's; CompiledSystem takes the equations).
-  bool forms_mass_matrix() const;
+  bool forms_mass_matrix() const { return forms_mass_matrix_; }
   // M and f of M q̈ = f: f = τ − b.
   void mass_and_forcing(double t, tree::TreeVector q, tree::TreeVector qdot,
                         std::span<const double> parameters, Eigen::MatrixXd& M, Eigen::VectorXd& f,
@@ -79,6 +79,7 @@ class TreeEvaluation {
   Tape potentials_;    // [t, q, q̇, p] → U of the forces other than gravity
   std::vector<double> reference_;  // q of the constants: 0, e0 = 1
   std::size_t p_ = 0;
+  bool forms_mass_matrix_ = true;  // no ball or floating joint
 };
 
 }  // namespace unidyn
