@@ -120,9 +120,14 @@ TEST(MjcfImport, RefusesWithFileLineAndColumn) {
                  "t.xml:3:15: a free joint moves a body of <worldbody> only");
   expect_refused(world("  <body euler=\"0 0 1\"/>\n", "<compiler eulerseq=\"zyx\"/>"),
                  "t.xml:1:39: only eulerseq=\"xyz\" (MuJoCo's default) is supported yet");
-  expect_refused(world("  <body name=\"a\"/>\n", "<equality><weld body1=\"a\"/></equality>"),
-                 "t.xml:1:29: <weld> equality constraints are not supported yet (<connect> and "
-                 "<joint> are)");
+  expect_refused(world("  <body name=\"a\"/>\n", "<equality><tendon tendon1=\"a\"/></equality>"),
+                 "t.xml:1:29: <tendon> equality constraints are not supported yet (<connect>, "
+                 "<weld> and <joint> are)");
+  expect_refused(
+      world("  <body name=\"a\"/>\n", "<equality><weld body1=\"a\" body2=\"a\"/></equality>"),
+      "t.xml:1:29: a <weld> joins two different bodies (one may be the world)");
+  expect_refused(world("  <body name=\"a\"/>\n", "<equality><weld body2=\"a\"/></equality>"),
+                 "t.xml:1:29: <weld> needs body1=\"...\"");
   expect_refused(
       world("  <body/>\n", "<equality><connect body1=\"b\" anchor=\"0 0 0\"/></equality>"),
       "t.xml:1:45: no body named 'b' in <worldbody>");
@@ -186,14 +191,60 @@ TEST(MjcfImport, EqualitiesAsPositionConstraints) {
       << model.yaml;
   EXPECT_EQ(model.yaml.find("equality3"), std::string::npos) << model.yaml;
   ASSERT_EQ(model.notes.size(), 5u);
-  EXPECT_EQ(model.notes[0],
-            "t.xml:2:3: solref and solimp not applied: unidyn holds the constraint exactly");
+  EXPECT_EQ(model.notes[0], "t.xml:2:3: solref not applied: unidyn holds the constraint exactly");
   EXPECT_EQ(model.notes[1],
             "t.xml:2:3: <connect> 'loop' holds a.frame_point([0.5, 0, 0]) on b.frame_point([-0.5, "
             "-2, 1]), the point where it is at qpos0 (computed)");
   EXPECT_EQ(model.notes[2], "t.xml:3:3: an unnamed <connect> is named equality1 (its MuJoCo id)");
   EXPECT_EQ(model.notes[4],
             "t.xml:5:3: <joint> with active=\"false\": left out, as MuJoCo leaves it off");
+}
+
+// <weld>: to the ground with the pose at qpos0 (body1's point where the ground's anchor is, and
+// R0 = R1ᵀ: the body turned half a turn about E3, so R0 = diag(-1, -1, 1)), and to another body
+// with a typed relpose (R0 = I); torquescale noted.
+TEST(MjcfImport, WeldsAsSixPositionConstraints) {
+  const std::string text =
+      world("  <body name=\"a\" pos=\"0 0 1\" quat=\"0 0 0 1\"><joint name=\"qa\"/>" + kInertial +
+                "\n    <body name=\"b\" pos=\"0 0 -1\"><joint name=\"qb\"/>" + kInertial +
+                "</body>\n  </body>\n",
+            "<equality>\n"
+            "  <weld name=\"fix\" body1=\"a\" anchor=\"0 0 0.5\"/>\n"
+            "  <weld name=\"glue\" body1=\"a\" body2=\"b\" relpose=\"0.1 0 0 1 0 0 0\" "
+            "torquescale=\"3\"/>\n"
+            "</equality>");
+  const auto model = import_mjcf(text, "t.xml");
+  const std::string fix = "dot(a.frame_point([0, 0, -0.5]) - [0, 0, 0.5], E";
+  EXPECT_TRUE(has_line(model.yaml, "  - name: fix_1\n    position: " + fix + "1)")) << model.yaml;
+  EXPECT_TRUE(has_line(model.yaml, "  - name: fix_3\n    position: " + fix + "3)")) << model.yaml;
+  // E23, E31, E12 of R1ᵀ R2 R0ᵀ: dot(f1_i, R2 R0ᵀ Ej), R0's rows on the ground's basis
+  EXPECT_TRUE(has_line(model.yaml,
+                       "  - name: fix_4\n    position: dot(a.frame_point([0, 1, 0]) - a.origin, "
+                       "[0, 0, 1])"))
+      << model.yaml;
+  EXPECT_TRUE(has_line(model.yaml,
+                       "  - name: fix_5\n    position: dot(a.frame_point([0, 0, 1]) - a.origin, "
+                       "[-1, 0, 0])"))
+      << model.yaml;
+  EXPECT_TRUE(has_line(model.yaml,
+                       "  - name: fix_6\n    position: dot(a.frame_point([1, 0, 0]) - a.origin, "
+                       "[0, -1, 0])"))
+      << model.yaml;
+  EXPECT_TRUE(has_line(model.yaml,
+                       "  - name: glue_2\n    position: dot(a.frame_point([0.1, 0, 0]) - "
+                       "b.frame_point([0, 0, 0]), E2)"))
+      << model.yaml;
+  EXPECT_TRUE(has_line(model.yaml,
+                       "  - name: glue_4\n    position: dot(a.frame_point([0, 1, 0]) - a.origin, "
+                       "b.frame_point([0, 0, 1]) - b.origin)"))
+      << model.yaml;
+  ASSERT_EQ(model.notes.size(), 3u);
+  EXPECT_EQ(model.notes[0],
+            "t.xml:2:3: <weld> 'fix' holds a.frame_point([0, 0, -0.5]) on [0, 0, 0.5] and the "
+            "ground's frame turned from a's by the rotation at qpos0 (computed): rows 4-6 are the "
+            "error rotation's E23, E31, E12");
+  EXPECT_EQ(model.notes[1],
+            "t.xml:3:3: torquescale not applied: unidyn holds the constraint exactly");
 }
 
 // <default> classes: the file imports as the same file with every class's attributes written

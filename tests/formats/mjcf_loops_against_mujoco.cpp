@@ -1,14 +1,22 @@
-// MJCF <equality> constraints (closed loops by <connect>, couplings by <joint>) read by unidyn and
-// by MuJoCo 2.2.2; unidyn solves them over the tree and by the compiled equations. MuJoCo holds
-// them softly, so its qacc is not the oracle; its equality rows are: Ψ(q) = efc_pos and A = ∂Ψ/∂q =
-// efc_J at random q, and, at states on the constraints (q by Newton's method on MuJoCo's rows, q̇ in
-// the null space of its A), unidyn's q̈ solves
+// MJCF <equality> constraints (closed loops by <connect> and <weld>, couplings by <joint>) read by
+// unidyn and by MuJoCo 2.2.2; unidyn solves them over the tree and by the compiled equations.
+// MuJoCo holds them softly, so its qacc is not the oracle; its equality rows are: Ψ(q) = efc_pos
+// and A = ∂Ψ/∂q = efc_J at random q — a weld's three turning rows are other functions than MuJoCo's
+// (E23, E31, E12 of the error rotation, not a quaternion's), so for them A's row space is
+// MuJoCo's, and Ψ = 0 where MuJoCo's are 0 — and, at states on the constraints (q by Newton's
+// method on MuJoCo's rows, q̇ in the null space of its A), unidyn's q̈ solves
 //
 //   M q̈ − f ∈ range(Aᵀ)    (Lagrange's equations with constraint forces Aᵀ λ, book (3.8)),
 //   A q̈ + Ȧ q̇ = 0          (the constraints' second derivative),
 //
 // with MuJoCo's M (mj_fullM), f = −qfrc_bias and A, and Ȧ q̇ = d/ds [A(q + s q̇)] q̇ at s = 0 by
 // central differences of MuJoCo's A, Richardson-extrapolated (error O(h⁴), h = 1e-3).
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
 #include "mujoco_oracle.hpp"
 
 namespace unidyn {
@@ -67,23 +75,26 @@ struct Loaded {
                   compiled_equations()) {}
 };
 
-// A random q moved onto MuJoCo's constraints by Newton's method (the smallest step each time),
-// and a random q̇ in the null space of its A.
+// A random q moved onto MuJoCo's constraints by Newton's method (the smallest step each time; a
+// new random start when it does not converge, 10 at most), and a random q̇ in the null space of A.
 bool random_state_on_constraints(Mujoco& mj, test::Random& random, Eigen::VectorXd& q,
                                  Eigen::VectorXd& qdot) {
   const int n = mj.dofs();
-  q = Eigen::VectorXd(n);
-  for (int i = 0; i < n; ++i) q[i] = random.uniform(-1.5, 1.5);
-  for (int k = 0; k < 60; ++k) {
-    const Rows rows = mujoco_rows(mj, q);
-    if (rows.psi.norm() < 1e-14) {
-      const Eigen::MatrixXd N = Eigen::FullPivLU<Eigen::MatrixXd>(rows.A).kernel();
-      Eigen::VectorXd c(N.cols());
-      for (Eigen::Index j = 0; j < c.size(); ++j) c[j] = random.uniform(-2.0, 2.0);
-      qdot = N * c;
-      return N.cols() == n - rows.A.rows();
+  for (int start = 0; start < 10; ++start) {
+    q = Eigen::VectorXd(n);
+    for (int i = 0; i < n; ++i) q[i] = random.uniform(-1.5, 1.5);
+    for (int k = 0; k < 60; ++k) {
+      const Rows rows = mujoco_rows(mj, q);
+      if (rows.psi.norm() < 1e-14) {
+        const Eigen::MatrixXd N = Eigen::FullPivLU<Eigen::MatrixXd>(rows.A).kernel();
+        Eigen::VectorXd c(N.cols());
+        for (Eigen::Index j = 0; j < c.size(); ++j) c[j] = random.uniform(-2.0, 2.0);
+        qdot = N * c;
+        if (N.cols() == n - rows.A.rows()) return true;
+        break;
+      }
+      q -= rows.A.completeOrthogonalDecomposition().solve(rows.psi);
     }
-    q -= rows.A.completeOrthogonalDecomposition().solve(rows.psi);
   }
   return false;
 }
@@ -98,33 +109,59 @@ Eigen::VectorXd mujoco_rate_term(Mujoco& mj, const Eigen::VectorXd& q,
   return (4 * D(h / 2) - D(h)) / 3;
 }
 
-// Ψ and A of unidyn's constraints against MuJoCo's rows at random q (on and off the constraints).
-void expect_same_rows(const std::string& file) {
+// How far the rows of B are from the row space of A, relative, and infinity when B's rank is not
+// A's (then their row spaces differ).
+double off_row_space(const Eigen::MatrixXd& B, const Eigen::MatrixXd& A) {
+  const Eigen::JacobiSVD<Eigen::MatrixXd> a(A, Eigen::ComputeThinV), b(B);
+  const auto rank = [](const Eigen::VectorXd& s) { return (s.array() > 1e-8 * s[0]).count(); };
+  if (rank(a.singularValues()) != rank(b.singularValues())) return INFINITY;
+  const Eigen::MatrixXd V = a.matrixV().leftCols(rank(a.singularValues()));
+  return (B - B * V * V.transpose()).norm() / B.norm();
+}
+
+// Ψ and A of unidyn's constraints against MuJoCo's rows at random q (off the constraints): the
+// rows `turning` (a weld's, in threes) by their row space, the others row by row.
+void expect_same_rows(const std::string& file, const std::vector<Eigen::Index>& turning = {}) {
   Loaded loaded(file);
   const CompiledSystem& compiled = *loaded.unidyn.compiled;
   CompiledSystemData data = compiled.make_data();
   const auto parameters = initial_state(loaded.unidyn.loaded.system, {}).parameters;
   test::Random random;
-  double psi_error = 0, A_error = 0;
+  double psi_error = 0, A_error = 0, space_error = 0;
   for (int k = 0; k < 20; ++k) {
     Eigen::VectorXd q(loaded.mj.dofs());
     for (Eigen::Index i = 0; i < q.size(); ++i) q[i] = random.uniform(-2.0, 2.0);
-    const Rows reference = mujoco_rows(loaded.mj, q);
+    Rows reference = mujoco_rows(loaded.mj, q);
     ASSERT_EQ(static_cast<std::size_t>(reference.psi.size()), compiled.constraint_count());
     compiled.constraints(0, q, Eigen::VectorXd::Zero(q.size()), parameters, data);
-    psi_error = std::max(psi_error, relative(data.constraint_position, reference.psi));
-    A_error = std::max(A_error, relative(data.constraint_matrix, reference.A));
+    Eigen::VectorXd psi = data.constraint_position;
+    Eigen::MatrixXd A = data.constraint_matrix;
+    for (std::size_t w = 0; w < turning.size(); w += 3) {
+      const Eigen::Index first = turning[w];
+      space_error = std::max(
+          space_error, off_row_space(A.middleRows(first, 3), reference.A.middleRows(first, 3)));
+      psi.segment(first, 3).setZero();
+      reference.psi.segment(first, 3).setZero();
+      A.middleRows(first, 3).setZero();
+      reference.A.middleRows(first, 3).setZero();
+    }
+    psi_error = std::max(psi_error, relative(psi, reference.psi));
+    A_error = std::max(A_error, relative(A, reference.A));
   }
   EXPECT_LT(psi_error, 1e-13);
   EXPECT_LT(A_error, 1e-13);
-  std::printf("%s against MuJoCo's equality rows: Psi %.3g, A %.3g relative\n", file.c_str(),
-              psi_error, A_error);
+  EXPECT_LT(space_error, 1e-12);
+  std::printf(
+      "%s against MuJoCo's equality rows: Psi %.3g, A %.3g relative; turning rows' row space "
+      "%.3g\n",
+      file.c_str(), psi_error, A_error, space_error);
 }
 
 // How far q̈ is from solving MuJoCo's equations at a state on the constraints: M q̈ − f off the
-// range of Aᵀ, and A q̈ + Ȧ q̇, each relative.
+// range of Aᵀ, and A q̈ + Ȧ q̇, each relative to its terms' size (‖A‖ ‖q̈‖: q̈ is mostly along
+// the constraints, so A q̈ is small beside it).
 struct Residuals {
-  double force = 0, constraint = 0, multipliers = 0;
+  double force = 0, constraint = 0, multipliers = 0, position = 0;
 };
 
 Residuals mujoco_residuals(Mujoco& mj, const Eigen::VectorXd& q, const Eigen::VectorXd& qdot,
@@ -140,7 +177,7 @@ Residuals mujoco_residuals(Mujoco& mj, const Eigen::VectorXd& q, const Eigen::Ve
   const Eigen::MatrixXd N = Eigen::FullPivLU<Eigen::MatrixXd>(rows.A).kernel();
   const Eigen::VectorXd residual = M * qddot - f;
   return {(N.transpose() * residual).norm() / ((M * qddot).norm() + f.norm()),
-          (rows.A * qddot + rate_term).norm() / ((rows.A * qddot).norm() + rate_term.norm())};
+          (rows.A * qddot + rate_term).norm() / (rows.A.norm() * qddot.norm() + rate_term.norm())};
 }
 
 // unidyn's q̈, over the tree and by the compiled equations, in MuJoCo's Lagrange's equations and
@@ -161,6 +198,9 @@ void expect_constrained_accelerations(const std::string& file) {
       CompiledSystemData data = compiled->make_data();
       Eigen::VectorXd qddot, lambda;
       compiled->solve(0, q, qdot, parameters, qddot, lambda, data);
+      // unidyn's constraints hold where MuJoCo's do
+      compiled->constraints(0, q, qdot, parameters, data);
+      worst.position = std::max(worst.position, data.constraint_position.norm());
       const Residuals r = mujoco_residuals(mj, q, qdot, qddot);
       worst.force = std::max(worst.force, r.force);
       worst.constraint = std::max(worst.constraint, r.constraint);
@@ -172,6 +212,7 @@ void expect_constrained_accelerations(const std::string& file) {
   EXPECT_LT(worst.force, 1e-12);
   EXPECT_LT(worst.constraint, 1e-10);  // the differences' error
   EXPECT_LT(worst.multipliers, 1e-10);
+  EXPECT_LT(worst.position, 1e-13);
   test::record("force_error", worst.force);
   test::record("constraint_error", worst.constraint);
   std::printf(
@@ -187,6 +228,32 @@ TEST(MjcfLoopsAgainstMujoco, ConnectRowsAreMujocos) {
 
 TEST(MjcfLoopsAgainstMujoco, ConnectAccelerationsSolveMujocosEquations) {
   expect_constrained_accelerations("spatial-loop.xml");
+}
+
+// A spatial linkage closed by a <weld> (anchor on the tool, the relative pose at qpos0): its
+// three position rows, and its three turning rows by row space.
+TEST(MjcfLoopsAgainstMujoco, WeldRowsAreMujocos) {
+  expect_same_rows("welded-loop.xml", {3, 4, 5});
+}
+
+TEST(MjcfLoopsAgainstMujoco, WeldAccelerationsSolveMujocosEquations) {
+  expect_constrained_accelerations("welded-loop.xml");
+}
+
+// The same weld with its relative pose typed (relpose: the hand's point and the tool's turn from
+// the hand, away from qpos0's).
+TEST(MjcfLoopsAgainstMujoco, WeldWithRelposeRowsAreMujocos) {
+  std::ifstream in(engine_oracle::formats_model("welded-loop.xml"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string weld = "anchor=\"0.02 0 0.03\"";
+  text.replace(text.find(weld), weld.size(),
+               weld + " relpose=\"0.1 0.02 -0.05 0.95 0.1 -0.2 0.15\"");
+  const auto path = std::filesystem::path(testing::TempDir()) /
+                    ("relposed-loop" + std::to_string(::getpid()) + ".xml");
+  std::ofstream(path) << text;
+  expect_same_rows(path.string(), {3, 4, 5});
+  expect_constrained_accelerations(path.string());
+  std::filesystem::remove(path);
 }
 
 // <joint> equalities: a quadratic coupling of two joints, and a joint held at a0.
