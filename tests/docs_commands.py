@@ -172,6 +172,8 @@ def run_python_blocks(root, build):
         for start, lines in blocks(path, "python"):
             count += 1
             with tempfile.TemporaryDirectory(prefix="unidyn-docs-") as directory:
+                # examples/ as a reader has it, as for the commands
+                os.symlink(root / "examples", pathlib.Path(directory) / "examples")
                 done = subprocess.run([python, "-c", "\n".join(lines)], cwd=directory,
                                       env=environment, capture_output=True, text=True,
                                       timeout=TIMEOUT)

@@ -91,11 +91,11 @@ PYBIND11_MODULE(_unidyn, module) {
   });
 
   py::class_<PythonModel, std::shared_ptr<PythonModel>>(module, "Model")
-      .def(py::init([](const std::string& source) {
+      .def(py::init([](const std::string& source, bool limits) {
              py::gil_scoped_release unlocked;
-             return std::make_shared<PythonModel>(source);
+             return std::make_shared<PythonModel>(source, limits);
            }),
-           py::arg("source"))
+           py::arg("source"), py::arg("limits") = false)
       .def_property_readonly("name", [](const PythonModel& m) { return m.system().name; })
       .def_property_readonly("reference", [](const PythonModel& m) { return m.system().reference; })
       .def_property_readonly("path", &PythonModel::path)

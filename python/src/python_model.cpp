@@ -30,14 +30,15 @@ std::mutex& symbolic_lock() {
 
 }  // namespace
 
-PythonModel::PythonModel(const std::string& source) {
+PythonModel::PythonModel(const std::string& source, bool limits) {
   const std::lock_guard held(symbolic_lock());
   // a text with a line break is a model's text; anything else names a file or a bundled model
   if (source.find('\n') != std::string::npos) {
     model_ = std::make_unique<commands::LoadedModel>(
         commands::LoadedModel{parse_model(source, "<string>"), source, "<string>"});
   } else {
-    model_ = std::make_unique<commands::LoadedModel>(commands::load_named_model(source));
+    model_ = std::make_unique<commands::LoadedModel>(
+        commands::load_named_model(source, formats::ImportOptions{limits}));
   }
 }
 

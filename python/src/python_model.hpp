@@ -51,9 +51,10 @@ struct RunRequest {
 
 class PythonModel {
  public:
-  // `source`: a model file, a bundled model's name, or a model's text (a text with a newline).
+  // `source`: a model file, a bundled model's name, or a model's text (a text with a newline);
+  // `limits`: a URDF or MJCF file's joint limits as unilateral contacts (the commands' --limits).
   // Throws ModelError (file:line:column) or std::invalid_argument.
-  explicit PythonModel(const std::string& source);
+  explicit PythonModel(const std::string& source, bool limits = false);
   ~PythonModel();
   PythonModel(const PythonModel&) = delete;
   PythonModel& operator=(const PythonModel&) = delete;

@@ -56,6 +56,11 @@ def test_load_a_urdf_file(tmp_path):
     arm = unidyn.load(os.path.join(examples, "three-link-arm.urdf"))
     assert arm.name == "three_link_arm"
     assert arm.coordinates == ["shoulder", "elbow", "wrist"]
+    assert arm.constraints == []
+    limited = unidyn.load(os.path.join(examples, "three-link-arm.urdf"), limits=True)
+    assert limited.constraints == ["elbow_lower", "elbow_upper", "wrist_lower", "wrist_upper"]
+    with pytest.raises(ValueError, match="--limits applies to URDF and MJCF files"):
+        unidyn.load("double-pendulum", limits=True)
     bad = tmp_path / "bad.urdf"
     bad.write_text('<robot name="r">\n  <link name="a"><inertial><mass value="-1"/>'
                    '</inertial></link>\n</robot>\n')

@@ -76,8 +76,8 @@ class Model:
     """A model: parameters, coordinates, constraints; its equations compiled once on first use
     (parameters are inputs of the compiled code: one compilation serves every parameter set)."""
 
-    def __init__(self, source):
-        self._model = _Model(str(source))
+    def __init__(self, source, limits=False):
+        self._model = _Model(str(source), limits)
 
     def __reduce__(self):
         # to another process (an executor's worker) as its text: loaded there once per process
@@ -145,9 +145,10 @@ def _period(period):
     return None if period is None else float(period)
 
 
-def load(source):
-    """A model from a file, a bundled model's name, or a model's text."""
-    return Model(source)
+def load(source, limits=False):
+    """A model from a file, a bundled model's name, or a model's text; `limits=True`: a URDF or
+    MJCF file's joint limits as unilateral contacts (the commands' --limits)."""
+    return Model(source, limits)
 
 
 

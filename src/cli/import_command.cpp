@@ -14,10 +14,17 @@ void add_import_command(CLI::App& app, ImportCommand& c) {
   c.import->add_option("file", c.file, "URDF file (*.urdf) or MJCF file (*.xml, root <mujoco>)")
       ->required();
   c.import->add_option("-o,--output", c.output, "YAML file (default: standard output)");
+  add_import_options(*c.import, c.options);
+}
+
+void add_import_options(CLI::App& command, formats::ImportOptions& options) {
+  command.add_flag("--limits", options.limits,
+                   "a URDF or MJCF file's joint limits (<limit lower upper>, a limited joint's "
+                   "range) as unilateral contacts NAME_lower, NAME_upper that stop the joint");
 }
 
 int run_import_command(const ImportCommand& c) {
-  commands::write_import(c.file, c.output, std::cout, std::cerr);
+  commands::write_import(c.file, c.options, c.output, std::cout, std::cerr);
   return 0;
 }
 

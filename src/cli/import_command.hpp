@@ -4,13 +4,19 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "unidyn/formats/urdf.hpp"
+
 namespace unidyn::cli {
 
 struct ImportCommand {
   CLI::App* import = nullptr;
-  std::string file;    // the URDF file
-  std::string output;  // -o: the YAML file (default: standard output)
+  std::string file;                // the URDF or MJCF file
+  std::string output;              // -o: the YAML file (default: standard output)
+  formats::ImportOptions options;  // --limits
 };
+
+// The options of an import, on every command that reads a URDF or MJCF file (--limits).
+void add_import_options(CLI::App& command, formats::ImportOptions& options);
 
 void add_import_command(CLI::App& app, ImportCommand& command);
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "import_command.hpp"
 #include "signals.hpp"
 #include "unidyn/commands/model_source.hpp"
 #include "unidyn/commands/report_command.hpp"
@@ -64,6 +65,7 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
                    "z2, ...) | matrix (M q'' = f + A^T lambda)")
       ->capture_default_str();
   c.derive->add_flag("--timings", c.timings, "each phase's time on standard error");
+  add_import_options(*c.derive, c.import);
   c.derive->add_flag("--reduced", o.reduced,
                      "approach II: eliminate the constraints that can be solved for a coordinate");
   c.derive->footer(
@@ -88,6 +90,7 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
                      "native (compiled C++, cached; the tape when no compiler) | tape")
         ->check(CLI::IsMember({"native", "tape"}))
         ->capture_default_str();
+    add_import_options(*command, c.import);
   };
   c.simulate = app.add_subcommand("simulate", "Simulate a model: CSV rows and a run summary");
   run_options(c.simulate);
@@ -109,6 +112,7 @@ void add_model_commands(CLI::App& app, ModelCommands& c) {
   c.check->add_option("--set", o.sets, "NAME=VALUE: a parameter, q or der(q)");
   c.check->add_flag("--reduced", o.reduced, "check the approach-II equations");
   c.check->add_flag("--timings", c.timings, "each phase's time on standard error");
+  add_import_options(*c.check, c.import);
 
   c.models = app.add_subcommand("models", "List the bundled book systems, or print one");
   c.models->add_option("name", c.model_name, "a bundled model");
@@ -123,7 +127,7 @@ int run_model_commands(const ModelCommands& c) {
     return -1;
   }
   if (c.timings) start_phase_timings();
-  const LoadedModel model = commands::load_named_model(c.model);
+  const LoadedModel model = commands::load_named_model(c.model, c.import);
   // the timings on standard error however the command ends
   struct Report {
     ~Report() { fmt::print(stderr, "{}", phase_timings_report()); }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "unidyn/commands/model_commands.hpp"
+#include "unidyn/formats/urdf.hpp"
 
 namespace unidyn::cli {
 
@@ -20,6 +21,7 @@ struct ModelCommands {
   std::string model_name;  // models: the bundled model to print
   bool timings = false;    // derive, check: each phase's time on standard error
   commands::ModelOptions options;
+  formats::ImportOptions import;  // --limits
 };
 
 void add_model_commands(CLI::App& app, ModelCommands& commands);

@@ -11,17 +11,15 @@
 
 namespace unidyn::commands {
 
-void write_import(const std::string& file, const std::string& output, std::ostream& out,
-                  std::ostream& notes) {
-  const bool mjcf = formats::is_mjcf_file(file);
-  if (!is_urdf(file) && !mjcf) {
+void write_import(const std::string& file, const formats::ImportOptions& options,
+                  const std::string& output, std::ostream& out, std::ostream& notes) {
+  if (!is_imported(file)) {
     throw std::invalid_argument("'" + file +
                                 "': unidyn imports URDF files (*.urdf) and MJCF files (*.xml "
                                 "whose root element is <mujoco>)");
   }
   if (!output.empty()) expect_writable(output);
-  const formats::ImportedModel model =
-      mjcf ? formats::import_mjcf_file(file) : formats::import_urdf_file(file);
+  const formats::ImportedModel model = import_robot_file(file, options);
   for (const auto& note : model.notes) notes << printable(note) << '\n';
   if (output.empty()) {
     out << model.yaml;

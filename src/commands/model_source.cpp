@@ -101,16 +101,28 @@ bool is_urdf(const std::string& path) {
   return fs::path(path).extension() == ".urdf";
 }
 
+bool is_imported(const std::string& path) {
+  return is_urdf(path) || formats::is_mjcf_file(path);
+}
+
+formats::ImportedModel import_robot_file(const std::string& path,
+                                         const formats::ImportOptions& options) {
+  return is_urdf(path) ? formats::import_urdf_file(path, options)
+                       : formats::import_mjcf_file(path, options);
+}
+
 // A URDF file, or an MJCF file (.xml with the root <mujoco>), is imported: the model is the YAML
 // it becomes (`unidyn import` prints it).
-LoadedModel load_named_model(const std::string& argument) {
+LoadedModel load_named_model(const std::string& argument, const formats::ImportOptions& options) {
   const std::string path = resolve_model(argument);
-  const bool urdf = is_urdf(path);
-  const bool mjcf = !urdf && formats::is_mjcf_file(path);
-  std::string text = urdf   ? formats::import_urdf_file(path).yaml
-                     : mjcf ? formats::import_mjcf_file(path).yaml
-                            : read_model_text(path);
-  System system = parse_model(text, urdf || mjcf ? path + " (imported)" : path);
+  const bool imported = is_imported(path);
+  if (options.limits && !imported) {
+    throw std::invalid_argument(
+        "--limits applies to URDF and MJCF files; in a unidyn model a "
+        "joint's limits are unilateral constraints (docs/model-format.md)");
+  }
+  std::string text = imported ? import_robot_file(path, options).yaml : read_model_text(path);
+  System system = parse_model(text, imported ? path + " (imported)" : path);
   end_phase("read model");
   return {std::move(system), std::move(text), path};
 }

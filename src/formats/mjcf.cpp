@@ -40,6 +40,7 @@ void read_compiler(const XmlSource& source, const XMLElement& compiler, MjcfCont
     }
     context.degrees = std::strcmp(angle, "degree") == 0;
   }
+  context.autolimits = compiler.BoolAttribute("autolimits", false);
   expect_value(source, compiler, "eulerseq", "xyz",
                "only eulerseq=\"xyz\" (MuJoCo's default) is supported yet");
   expect_value(source, compiler, "coordinate", "local",
@@ -139,7 +140,8 @@ bool is_mjcf_text(const std::string& text) {
   return document.RootElement() && std::strcmp(document.RootElement()->Name(), "mujoco") == 0;
 }
 
-ImportedModel import_mjcf(const std::string& text, const std::string& file) {
+ImportedModel import_mjcf(const std::string& text, const std::string& file,
+                          const ImportOptions& options) {
   if (text.size() > kMaxMjcfBytes) {
     throw ModelError({file, 0, 0}, "an MJCF file larger than 16 MiB is refused");
   }
@@ -160,9 +162,10 @@ ImportedModel import_mjcf(const std::string& text, const std::string& file) {
   Names names;
   Written written;
   MjcfContext context{source, model.notes, ignored, names, written};
-  Options options;
-  read_top_level(source, context, options);
-  if (options.contacts && has_contact_geoms(mujoco)) {
+  context.limits = options.limits;
+  Options top;
+  read_top_level(source, context, top);
+  if (top.contacts && has_contact_geoms(mujoco)) {
     model.notes.push_back(source.position(mujoco).str() +
                           ": contacts between geoms are not modelled (the file's geoms collide "
                           "in MuJoCo: contype and conaffinity are on)");
@@ -177,13 +180,13 @@ ImportedModel import_mjcf(const std::string& text, const std::string& file) {
        equality = equality->NextSiblingElement("equality")) {
     write_equalities(context, *equality);
   }
-  model.yaml = model_yaml(header(name, file, options), written);
+  model.yaml = model_yaml(header(name, file, top), written);
   for (auto& note : ignored.notes()) model.notes.push_back(std::move(note));
   return model;
 }
 
-ImportedModel import_mjcf_file(const std::string& path) {
-  return import_mjcf(read_bounded_file(path, kMaxMjcfBytes, "MJCF file"), path);
+ImportedModel import_mjcf_file(const std::string& path, const ImportOptions& options) {
+  return import_mjcf(read_bounded_file(path, kMaxMjcfBytes, "MJCF file"), path, options);
 }
 
 bool is_mjcf_file(const std::string& path) {

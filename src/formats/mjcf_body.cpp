@@ -97,6 +97,38 @@ void read_damping(MjcfContext& context, const MjcfJoint& joint) {
       damper_line(joint.type == "slide", joint.coordinates[0], (*damping)[0].text));
 }
 
+// A limited joint's range (limited="true", or a range under <compiler autolimits="true">): with
+// --limits two unilateral contacts, else noted; a ball's (a cone) refused with --limits.
+void read_range(MjcfContext& context, const MjcfJoint& joint) {
+  const XmlSource& source = context.source;
+  const auto range = source.numbers(*joint.element, "range", 2);
+  if (!range) return;
+  const char* limited = joint.element->Attribute("limited");
+  const bool applies = limited ? std::strcmp(limited, "true") == 0 : context.autolimits;
+  if (!applies || !context.limits) {
+    context.ignored.add(source, *joint.element,
+                        "range: not applied (--limits makes a limited joint's range two "
+                        "unilateral contacts)");
+    return;
+  }
+  if (joint.type != "hinge" && joint.type != "slide") {
+    source.refuse(*joint.element, "range",
+                  "--limits: a " + joint.type + " joint's range is not supported yet");
+  }
+  const auto& [lower, upper] = std::pair{(*range)[0], (*range)[1]};
+  if (!(lower.value < upper.value)) {
+    source.refuse(
+        *joint.element, "range",
+        "--limits: the range's lower " + lower.text + " is not below its upper " + upper.text);
+  }
+  const bool angles = joint.type == "hinge";
+  write_limits(joint.coordinates[0],
+               angles ? angle_text(context, *joint.element, "range", lower) : lower.text,
+               angles ? angle_text(context, *joint.element, "range", upper) : upper.text,
+               source.position(*joint.element, "range"), context.names, context.notes,
+               context.written);
+}
+
 // The body's <joint> and <freejoint> elements in order: type (hinge by default), anchor, names.
 std::vector<MjcfJoint> read_joints(MjcfContext& context, const XMLElement& body, bool top_level) {
   std::vector<MjcfJoint> joints;
@@ -116,14 +148,11 @@ std::vector<MjcfJoint> read_joints(MjcfContext& context, const XMLElement& body,
       context.source.refuse(*e, "a free joint moves a body of <worldbody> only (as in MuJoCo)");
     }
     refuse_nonzero(context, *e);
-    if (e->Attribute("range")) {
-      context.ignored.add(context.source, *e,
-                          "range: not applied (joint limits are not made into contacts yet)");
-    }
     joint.coordinates = coordinate_names(context, *e, joint.type, joint.name);
     for (const auto& q : joint.coordinates) context.written.coordinates.push_back(q);
     if (e->Attribute("name")) context.named_joints[joint.name] = {joint.type, joint.coordinates};
     read_damping(context, joint);
+    read_range(context, joint);
     joints.push_back(std::move(joint));
   }
   if (joints.size() > 1) {

@@ -10,19 +10,6 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-// An angle as the model's text: "A*deg" in degrees (exact: deg is pi/180); in radians a rounded
-// multiple of π/4 as that multiple (exact_angles.hpp), with a note, else as typed.
-std::string angle_text(const MjcfContext& context, const XMLElement& element, const char* attribute,
-                       const Number& angle) {
-  if (angle.value == 0) return "0";
-  if (context.degrees) return angle.text + "*deg";
-  const auto exact = exact_quarter_pi_multiple(angle.value);
-  if (!exact || *exact == angle.text) return angle.text;
-  context.notes.push_back(context.source.position(element, attribute).str() + ": " + attribute +
-                          " angle " + angle.text + " read as " + *exact + kExactAngleNote);
-  return *exact;
-}
-
 double radians(const MjcfContext& context, const Number& angle) {
   return context.degrees ? angle.value * std::numbers::pi / 180 : angle.value;
 }
@@ -67,6 +54,17 @@ Orientation from_euler(const MjcfContext& context, const XMLElement& element) {
 }
 
 }  // namespace
+
+std::string angle_text(const MjcfContext& context, const XMLElement& element, const char* attribute,
+                       const Number& angle) {
+  if (angle.value == 0) return "0";
+  if (context.degrees) return angle.text + "*deg";
+  const auto exact = exact_quarter_pi_multiple(angle.value);
+  if (!exact || *exact == angle.text) return angle.text;
+  context.notes.push_back(context.source.position(element, attribute).str() + ": " + attribute +
+                          " angle " + angle.text + " read as " + *exact + kExactAngleNote);
+  return *exact;
+}
 
 Orientation orientation(const MjcfContext& context, const XMLElement& element) {
   for (const char* refused : {"xyaxes", "zaxis"}) {

@@ -26,6 +26,8 @@ struct MjcfContext {
   Written& written;
   bool degrees = true;            // <compiler angle>: MuJoCo's default is degree
   bool inertia_from_geom = true;  // <compiler inertiafromgeom> "auto" (the default) or "false"
+  bool autolimits = false;        // <compiler autolimits>: a joint with a range is limited
+  bool limits = false;            // --limits: limited joints' ranges as unilateral contacts
   int bodies = 0;                 // MuJoCo's ids: the world is body 0
   int joints = 0;
   int equalities = 0;
@@ -48,6 +50,11 @@ struct Orientation {
   Eigen::Quaterniond value = Eigen::Quaterniond::Identity();
 };
 Orientation orientation(const MjcfContext& context, const tinyxml2::XMLElement& element);
+
+// An angle as the model's text: "A*deg" in degrees (exact: deg is pi/180); in radians a rounded
+// multiple of π/4 as that multiple (exact_angles.hpp), with a note, else as typed.
+std::string angle_text(const MjcfContext& context, const tinyxml2::XMLElement& element,
+                       const char* attribute, const Number& angle);
 
 // The bodies under <worldbody> (or a <body>) whose frame is `parent` ("" for the ground),
 // depth-first in file order (MuJoCo's order of bodies and of qpos).

@@ -53,6 +53,10 @@ void write_body(const LinkContext& context, const UrdfTree& tree, std::size_t li
     for (auto& q : text.coordinates) written.coordinates.push_back(q);
     for (auto& value : text.initial) written.initial.push_back(value);
     if (!text.damper.empty()) written.dampers.push_back(text.damper);
+    if (context.limits) {
+      const std::string q = text.coordinates.empty() ? "" : text.coordinates[0];
+      write_joint_limits(context, joint, q, names, written);
+    }
   }
   for (auto& line : link_body_lines(context, *l.element, body_names[link])) {
     written.bodies.push_back(std::move(line));
@@ -61,7 +65,8 @@ void write_body(const LinkContext& context, const UrdfTree& tree, std::size_t li
 
 }  // namespace
 
-ImportedModel import_urdf(const std::string& text, const std::string& file) {
+ImportedModel import_urdf(const std::string& text, const std::string& file,
+                          const ImportOptions& options) {
   if (text.size() > kMaxUrdfBytes) {
     throw ModelError({file, 0, 0}, "a URDF file larger than 16 MiB is refused");
   }
@@ -79,7 +84,7 @@ ImportedModel import_urdf(const std::string& text, const std::string& file) {
   ignore_others(source, robot, {"link", "joint", "material"}, ignored);
   const auto materials = named_materials(source, ignored);
   const UrdfTree tree = read_tree(source);
-  const LinkContext context{source, model.notes, ignored, materials};
+  const LinkContext context{source, model.notes, ignored, materials, options.limits};
   Names names;
   Written written;
   std::vector<std::string> body_names(tree.links.size());
@@ -89,8 +94,8 @@ ImportedModel import_urdf(const std::string& text, const std::string& file) {
   return model;
 }
 
-ImportedModel import_urdf_file(const std::string& path) {
-  return import_urdf(read_bounded_file(path, kMaxUrdfBytes, "URDF file"), path);
+ImportedModel import_urdf_file(const std::string& path, const ImportOptions& options) {
+  return import_urdf(read_bounded_file(path, kMaxUrdfBytes, "URDF file"), path, options);
 }
 
 }  // namespace unidyn::formats

@@ -98,6 +98,30 @@ std::string rpy_text(const LinkContext& context, const XMLElement& origin,
 
 }  // namespace
 
+void write_joint_limits(const LinkContext& context, const UrdfJoint& joint,
+                        const std::string& coordinate, Names& names, Written& written) {
+  const XmlSource& source = context.source;
+  const XMLElement* limit = joint.element->FirstChildElement("limit");
+  if (!limit) return;
+  if (joint.type != "revolute" && joint.type != "prismatic") {
+    context.notes.push_back(source.position(*limit).str() + ": <limit> not applied: a " +
+                            joint.type + " joint has no position limits");
+    return;
+  }
+  const Number lower = source.numbers_or(*limit, "lower", {"0"})[0];
+  const Number upper = source.numbers_or(*limit, "upper", {"0"})[0];
+  if (!(lower.value < upper.value)) {
+    source.refuse(*limit, "--limits: lower " + lower.text + " is not below upper " + upper.text +
+                              " (a joint held at one value is a fixed joint)");
+  }
+  write_limits(coordinate, lower.text, upper.text, source.position(*limit), names, context.notes,
+               written);
+  context.ignored.add(source, *limit,
+                      "lower and upper made two unilateral contacts, Q_lower and Q_upper of the "
+                      "joint's coordinate Q (--limits, no rebound); effort and velocity not "
+                      "applied");
+}
+
 JointText joint_text(const LinkContext& context, const UrdfJoint& joint, const std::string& parent,
                      Names& names) {
   const XmlSource& source = context.source;
@@ -109,9 +133,9 @@ JointText joint_text(const LinkContext& context, const UrdfJoint& joint, const s
   }
   ignore_others(source, e, {"parent", "child", "origin", "axis", "dynamics", "limit", "mimic"},
                 context.ignored);
-  if (const auto* limit = e.FirstChildElement("limit")) {
+  if (const auto* limit = e.FirstChildElement("limit"); limit && !context.limits) {
     context.ignored.add(source, *limit,
-                        "not applied: unidyn does not make joint limits into contacts yet");
+                        "not applied (--limits makes lower and upper two unilateral contacts)");
   }
   JointText text;
   text.coordinates = coordinate_names(context, joint, names);

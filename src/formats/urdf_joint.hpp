@@ -21,4 +21,9 @@ struct JointText {
 JointText joint_text(const LinkContext& context, const UrdfJoint& joint, const std::string& parent,
                      Names& names);
 
+// With --limits, a revolute or prismatic joint's <limit lower upper> (default 0, 0) as two
+// unilateral contacts; lower ≥ upper refused (a joint held at one value is a fixed joint).
+void write_joint_limits(const LinkContext& context, const UrdfJoint& joint,
+                        const std::string& coordinate, Names& names, Written& written);
+
 }  // namespace unidyn::formats

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "unidyn/symbolic/printable_text.hpp"
+#include "urdf_tree.hpp"
 
 namespace unidyn::formats {
 
@@ -101,6 +102,19 @@ std::string damper_line(bool slides, const std::string& coordinate,
   return std::string(slides ? "  - slide_damper: {displacement: "
                             : "  - torsion_damper: {angle: ") +
          coordinate + ", coefficient: " + coefficient + "}";
+}
+
+void write_limits(const std::string& coordinate, const std::string& lower, const std::string& upper,
+                  const SourcePosition& where, Names& names, std::vector<std::string>& notes,
+                  Written& written) {
+  const std::string on_lower = names.claim(coordinate + "_lower", "constraint", where, notes);
+  const std::string on_upper = names.claim(coordinate + "_upper", "constraint", where, notes);
+  for (const auto& line :
+       {"  - name: " + on_lower, "    position: " + coordinate + " - (" + lower + ")",
+        std::string("    unilateral: true"), "  - name: " + on_upper,
+        "    position: (" + upper + ") - " + coordinate, std::string("    unilateral: true")}) {
+    written.constraints.push_back(line);
+  }
 }
 
 std::string model_yaml(const ModelHeader& header, const Written& w) {

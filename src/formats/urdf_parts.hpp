@@ -64,6 +64,15 @@ struct Written {
   std::vector<std::string> initial;
 };
 
+class Names;
+
+// A joint's position limits as two unilateral contacts (--limits), named after its coordinate Q:
+// Q_lower, Q − (lower) ≥ 0, and Q_upper, (upper) − Q ≥ 0, each holding while it pushes and
+// stopping the joint without rebound (restitution 0); `lower` and `upper` are the model's texts.
+void write_limits(const std::string& coordinate, const std::string& lower, const std::string& upper,
+                  const SourcePosition& where, Names& names, std::vector<std::string>& notes,
+                  Written& written);
+
 // A joint's damper as a force line: a slide damper in a sliding joint, else a torsion damper.
 std::string damper_line(bool slides, const std::string& coordinate, const std::string& coefficient);
 
@@ -91,6 +100,7 @@ struct LinkContext {
   std::vector<std::string>& notes;
   Ignored& ignored;
   const std::map<std::string, const tinyxml2::XMLElement*>& materials;  // <robot>'s, by name
+  bool limits = false;  // --limits: joint limits as unilateral contacts
 };
 
 // The body lines of a link after its `joint:` (indented under the body `name`): mass, inertia

@@ -152,7 +152,7 @@ TEST(UrdfImport, NotesIgnoredElementsOnceEach) {
       "t.urdf:2:3: <mujoco> ignored",
       "t.urdf:6:3: <transmission> ignored",
       "t.urdf:3:18: <collision> ignored (2 in the file, the first here)",
-      "t.urdf:4:70: <limit> not applied: unidyn does not make joint limits into contacts yet",
+      "t.urdf:4:70: <limit> not applied (--limits makes lower and upper two unilateral contacts)",
   };
   EXPECT_EQ(model.notes, expected);
 }

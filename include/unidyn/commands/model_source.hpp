@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "unidyn/formats/urdf.hpp"
 #include "unidyn/model/system.hpp"
 
 namespace unidyn::commands {
@@ -27,13 +28,20 @@ std::vector<std::pair<std::string, double>> parse_sets(const std::vector<std::st
 // Whether a model file is a URDF file (named *.urdf), which is imported.
 bool is_urdf(const std::string& path);
 
+// Whether a file is a URDF or MJCF file, and the model it imports as (--limits in `options`).
+bool is_imported(const std::string& path);
+formats::ImportedModel import_robot_file(const std::string& path,
+                                         const formats::ImportOptions& options);
+
 // The model a command names (a file, or a bundled model by name), read once, and its text (a URDF
-// file's: the YAML it is imported as, read as "PATH (imported)").
+// or MJCF file's: the YAML it is imported as, read as "PATH (imported)"). Import options given for
+// a model of the model language are bad input (std::invalid_argument).
 struct LoadedModel {
   System system;
   std::string text;
   std::string path;
 };
-LoadedModel load_named_model(const std::string& argument);
+LoadedModel load_named_model(const std::string& argument,
+                             const formats::ImportOptions& options = {});
 
 }  // namespace unidyn::commands

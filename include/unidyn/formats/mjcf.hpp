@@ -18,10 +18,11 @@ inline constexpr std::size_t kMaxMjcfBodies = 10000;
 bool is_mjcf_text(const std::string& text);
 
 // Throws ModelError at file:line:column for anything refused. The same text gives the same bytes.
-ImportedModel import_mjcf(const std::string& text, const std::string& file);
+ImportedModel import_mjcf(const std::string& text, const std::string& file,
+                          const ImportOptions& options = {});
 
 // The same from a file, read once and never past kMaxMjcfBytes (ModelError when it cannot be).
-ImportedModel import_mjcf_file(const std::string& path);
+ImportedModel import_mjcf_file(const std::string& path, const ImportOptions& options = {});
 
 // Whether the file at `path` ends in .xml and its root element is <mujoco> (ModelError when an
 // .xml file cannot be read).

@@ -20,10 +20,18 @@ struct ImportedModel {
   std::vector<std::string> notes;
 };
 
+// What an import may add on request: `limits` (the commands' --limits) makes each joint's
+// position limits (URDF <limit lower upper>, MJCF range) two unilateral contacts; without it they
+// are noted and not applied.
+struct ImportOptions {
+  bool limits = false;
+};
+
 // Throws ModelError at file:line:column for anything refused. The same text gives the same bytes.
-ImportedModel import_urdf(const std::string& text, const std::string& file);
+ImportedModel import_urdf(const std::string& text, const std::string& file,
+                          const ImportOptions& options = {});
 
 // The same from a file, read once and never past kMaxUrdfBytes (ModelError when it cannot be).
-ImportedModel import_urdf_file(const std::string& path);
+ImportedModel import_urdf_file(const std::string& path, const ImportOptions& options = {});
 
 }  // namespace unidyn::formats
