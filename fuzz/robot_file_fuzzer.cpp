@@ -12,14 +12,18 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  try {
-    (void)unidyn::formats::import_urdf(text, "fuzz.urdf");
-  } catch (const unidyn::ModelError&) {
-    // refused with file:line:column
-  }
-  try {
-    (void)unidyn::formats::import_mjcf(text, "fuzz.xml");
-  } catch (const unidyn::ModelError&) {
+  // as read by default and with --limits (joint limits as contacts)
+  for (const bool limits : {false, true}) {
+    const unidyn::formats::ImportOptions options{limits};
+    try {
+      (void)unidyn::formats::import_urdf(text, "fuzz.urdf", options);
+    } catch (const unidyn::ModelError&) {
+      // refused with file:line:column
+    }
+    try {
+      (void)unidyn::formats::import_mjcf(text, "fuzz.xml", options);
+    } catch (const unidyn::ModelError&) {
+    }
   }
   return 0;
 }

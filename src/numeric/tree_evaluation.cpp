@@ -22,9 +22,6 @@ std::string why_not_link(const System& system, std::size_t b) {
   if (joint.parent && *joint.parent >= b) {
     return "body '" + body.name + "' comes before its parent";
   }
-  if (joint.kind == TreeJoint::Kind::planar) {
-    return "body '" + body.name + "' has a planar joint (not yet recursive)";
-  }
   for (std::size_t k = 1; k < joint.coordinates.size(); ++k) {
     if (joint.coordinates[k] != joint.coordinates[0] + k) {
       return "body '" + body.name + "''s joint coordinates are not consecutive";
@@ -48,8 +45,12 @@ tree::JointKind link_kind(TreeJoint::Kind kind) {
   }
 }
 
-// The links' structure: parents, kinds and coordinates ("" in why_not when every body is one).
-tree::TreeModel tree_shape(const System& system, std::string& why_not) {
+// The links' structure: parents, kinds and coordinates ("" in why_not when every body is one), and
+// each body's link. A planar joint is three links: two massless frames sliding along E_k+1 and
+// E_k+2 of its joint frame (x, y), then the body turning about a = ±E_k (θ) — the same frame,
+// o = p + R0 (x E_k+1 + y E_k+2) and Q = R0 L(θ, a) (model/tree_joint.hpp).
+tree::TreeModel tree_shape(const System& system, std::vector<std::size_t>& body_links,
+                           std::string& why_not) {
   tree::TreeModel shape;
   shape.coordinates = system.coordinates().size();
   std::vector<int> owners(shape.coordinates, 0);
@@ -58,12 +59,23 @@ tree::TreeModel tree_shape(const System& system, std::string& why_not) {
     if (!why_not.empty()) break;
     const TreeJoint& joint = *system.bodies[b].joint;
     tree::TreeLink link;
-    link.parent = joint.parent ? static_cast<int>(*joint.parent) : -1;
+    link.parent = joint.parent ? static_cast<int>(body_links[*joint.parent]) : -1;
     link.kind = link_kind(joint.kind);
-    if (link.kind != tree::JointKind::fixed) {
+    if (joint.kind != TreeJoint::Kind::fixed) {
       link.coordinate = static_cast<int>(joint.coordinates.front());
       for (const std::size_t k : joint.coordinates) ++owners[k];
     }
+    if (joint.kind == TreeJoint::Kind::planar) {
+      // the slides along x and y, then the body's turn by θ
+      for (int slide = 0; slide < 2; ++slide) {
+        link.kind = tree::JointKind::prismatic;
+        shape.links.push_back(link);
+        link.parent = static_cast<int>(shape.links.size()) - 1;
+        ++link.coordinate;
+      }
+      link.kind = tree::JointKind::revolute;
+    }
+    body_links.push_back(shape.links.size());
     shape.links.push_back(link);
   }
   for (std::size_t k = 0; k < owners.size() && why_not.empty(); ++k) {
@@ -166,10 +178,12 @@ std::vector<double> reference_coordinates(const tree::TreeModel& shape) {
 
 // Whether no force acts along a ball or floating joint's coordinates (the algorithm takes none
 // there) — "" in why_not when none does.
-bool no_forces_on_euler_joints(const tree::TreeModel& shape, const std::vector<Expr>& tau,
-                               const System& system, std::string& why_not) {
-  for (std::size_t b = 0; b < shape.links.size(); ++b) {
-    const tree::TreeLink& link = shape.links[b];
+bool no_forces_on_euler_joints(const tree::TreeModel& shape,
+                               const std::vector<std::size_t>& body_links,
+                               const std::vector<Expr>& tau, const System& system,
+                               std::string& why_not) {
+  for (std::size_t b = 0; b < body_links.size(); ++b) {
+    const tree::TreeLink& link = shape.links[body_links[b]];
     if (!tree::has_euler_parameters(link)) continue;
     const std::size_t count = link.kind == tree::JointKind::ball ? 4 : 7;
     for (std::size_t k = 0; k < count; ++k) {
@@ -184,7 +198,8 @@ bool no_forces_on_euler_joints(const tree::TreeModel& shape, const std::vector<E
 }
 
 // Whether the constants are constant: the same at the start's zeros and at another state.
-bool constants_hold(const Tape& constants, const tree::TreeModel& shape, const System& system,
+bool constants_hold(const Tape& constants, const tree::TreeModel& shape,
+                    const std::vector<std::size_t>& body_links, const System& system,
                     std::string& why_not) {
   std::vector<double> zero(constants.input_count(), 0.0), other = zero;
   const std::size_t n = system.coordinates().size();
@@ -205,7 +220,7 @@ bool constants_hold(const Tape& constants, const tree::TreeModel& shape, const S
     }
   }
   for (std::size_t b = 0; b < system.bodies.size(); ++b) {
-    if (tree::has_euler_parameters(shape.links[b])) continue;  // no axis
+    if (tree::has_euler_parameters(shape.links[body_links[b]])) continue;  // no axis
     const double* axis = a.data() + b * kLinkConstants + 25;
     const double norm = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
     if (std::abs(norm - 1) > 1e-12) {
@@ -214,6 +229,29 @@ bool constants_hold(const Tape& constants, const tree::TreeModel& shape, const S
     }
   }
   return true;
+}
+
+// A body's link b from its constants c (m, c, J0, p, R0, a); a planar joint's body (after its two
+// slides: links b − 2, b − 1) turns about a at the slides' frame, which the first places.
+void set_link_numbers(const double* c, bool planar, std::vector<tree::TreeLink>& links,
+                      std::size_t b) {
+  tree::TreeLink& link = links[b];
+  const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> J0(c + 4);
+  link.inertia = tree::rigid_body_inertia(c[0], Eigen::Vector3d(c[1], c[2], c[3]), J0);
+  link.origin = Eigen::Vector3d(c[13], c[14], c[15]);
+  link.fixed_rotation = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(c + 16);
+  link.axis = Eigen::Vector3d(c[25], c[26], c[27]);
+  if (!planar) return;
+  // a = ±E_k: the slides along E_k+1, E_k+2 of the joint frame
+  Eigen::Index k = 0;
+  while (k < 2 && link.axis[k] == 0) ++k;
+  tree::TreeLink &x = links[b - 2], &y = links[b - 1];
+  x.origin = link.origin;
+  x.fixed_rotation = link.fixed_rotation;
+  x.axis = Eigen::Vector3d::Unit((k + 1) % 3);
+  y.axis = Eigen::Vector3d::Unit((k + 2) % 3);
+  link.origin.setZero();
+  link.fixed_rotation.setIdentity();
 }
 
 }  // namespace
@@ -225,26 +263,31 @@ TreePlan plan_tree(const System& system) {
   if (!system.impulses.empty()) why_not = "it applies impulses";
   if (system.bodies.empty()) why_not = "it has no bodies";
   if (!why_not.empty()) return plan;
-  tree::TreeModel shape = tree_shape(system, why_not);
+  std::vector<std::size_t> body_links;
+  tree::TreeModel shape = tree_shape(system, body_links, why_not);
   if (!why_not.empty() || !takes_constraints(system, shape, why_not)) return plan;
   const std::vector<Expr> tau = joint_forces(system, why_not);
-  if (!why_not.empty() || !no_forces_on_euler_joints(shape, tau, system, why_not)) return plan;
+  if (!why_not.empty() || !no_forces_on_euler_joints(shape, body_links, tau, system, why_not)) {
+    return plan;
+  }
   const std::vector<Expr> inputs = tape_inputs(system, false);
   Tape constants = Tape::compile(link_constants(system), inputs);
-  if (!constants_hold(constants, shape, system, why_not)) return plan;
+  if (!constants_hold(constants, shape, body_links, system, why_not)) return plan;
   Expr potential = 0;
   for (const ForceElement& f : system.forces) {
     if (f.kind != ForceElement::Kind::gravity) potential += f.potential;
   }
   plan.tree = std::make_shared<const TreeEvaluation>(
-      std::move(shape), std::move(constants), Tape::compile(tau, inputs),
+      std::move(shape), std::move(body_links), std::move(constants), Tape::compile(tau, inputs),
       Tape::compile(std::vector<Expr>{potential}, inputs), system.parameters.size());
   return plan;
 }
 
-TreeEvaluation::TreeEvaluation(tree::TreeModel shape, Tape constants, Tape joint_forces,
-                               Tape potentials, std::size_t parameters)
+TreeEvaluation::TreeEvaluation(tree::TreeModel shape, std::vector<std::size_t> body_links,
+                               Tape constants, Tape joint_forces, Tape potentials,
+                               std::size_t parameters)
     : shape_(std::move(shape)),
+      body_links_(std::move(body_links)),
       constants_(std::move(constants)),
       joint_forces_(std::move(joint_forces)),
       potentials_(std::move(potentials)),
@@ -279,12 +322,10 @@ void TreeEvaluation::prepare(double t, tree::TreeVector q, tree::TreeVector qdot
     constants_.evaluate(data.inputs, std::span(data.outputs.data(), constants_.output_count()),
                         data.workspace);
     const double* c = data.outputs.data();
-    for (tree::TreeLink& link : data.model.links) {
-      const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> J0(c + 4);
-      link.inertia = tree::rigid_body_inertia(c[0], Eigen::Vector3d(c[1], c[2], c[3]), J0);
-      link.origin = Eigen::Vector3d(c[13], c[14], c[15]);
-      link.fixed_rotation = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(c + 16);
-      link.axis = Eigen::Vector3d(c[25], c[26], c[27]);
+    for (std::size_t b = 0; b < body_links_.size(); ++b) {
+      // a planar joint's two slides are the links just before its body's
+      const bool planar = body_links_[b] == (b == 0 ? 0 : body_links_[b - 1] + 1) + 2;
+      set_link_numbers(c, planar, data.model.links, body_links_[b]);
       c += kLinkConstants;
     }
     data.model.gravity = Eigen::Vector3d(c[0], c[1], c[2]);

@@ -16,6 +16,9 @@ namespace {
 
 using namespace cli_test;
 
+// The golden files; under the sanitizers the first of each method and format (the printers' code
+// on one model each: 12 `derive` processes rather than 145, 170 s of the sanitized run — the texts
+// of every model are the optimised build's to check).
 std::vector<std::string> golden_files() {
   std::vector<std::string> names;
   for (const auto& entry : std::filesystem::directory_iterator(UNIDYN_GOLDEN_DIR)) {
@@ -25,6 +28,16 @@ std::vector<std::string> golden_files() {
     }
   }
   std::sort(names.begin(), names.end());
+#ifdef UNIDYN_SANITIZED
+  std::vector<std::string> kinds, first;
+  for (const auto& name : names) {
+    const std::string kind = name.substr(name.find('.'));  // .method.format
+    if (std::find(kinds.begin(), kinds.end(), kind) != kinds.end()) continue;
+    kinds.push_back(kind);
+    first.push_back(name);
+  }
+  names = first;
+#endif
   return names;
 }
 

@@ -37,18 +37,18 @@ struct TreePlan {
   std::string why_not;
 };
 
-// The system as a tree when it is one: every body on a fixed, revolute, prismatic, ball or
-// floating joint, every coordinate one joint's, no particles or impulses, no constraint but the
-// Euler parameters' unit norms (their multipliers are 0: tree/euler_parameter_joint.hpp) or, on a
-// tree without them, bilateral constraints without friction (loops closed over the tree), and no
-// force but gravity, potentials in the one-coordinate joints' coordinates and torsion springs and
-// dampers on joint angles.
+// The system as a tree when it is one: every body on a fixed, revolute, prismatic, ball, floating
+// or planar joint (three links: two slides and a turn), every coordinate one joint's, no particles
+// or impulses, no constraint but the Euler parameters' unit norms (their multipliers are 0:
+// tree/euler_parameter_joint.hpp) or, on a tree without them, bilateral constraints without
+// friction (loops closed over the tree), and no force but gravity, potentials in the one-coordinate
+// joints' coordinates and torsion springs and dampers on joint angles.
 TreePlan plan_tree(const System& system);
 
 class TreeEvaluation {
  public:
-  TreeEvaluation(tree::TreeModel shape, Tape constants, Tape joint_forces, Tape potentials,
-                 std::size_t parameters);
+  TreeEvaluation(tree::TreeModel shape, std::vector<std::size_t> body_links, Tape constants,
+                 Tape joint_forces, Tape potentials, std::size_t parameters);
 
   TreeEvaluationData make_data() const;
   // q̈ at (t, q, q̇); throws std::domain_error where the tree's inertia about a joint is not
@@ -73,7 +73,8 @@ class TreeEvaluation {
   void prepare(double t, tree::TreeVector q, tree::TreeVector qdot,
                std::span<const double> parameters, TreeEvaluationData& data) const;
 
-  tree::TreeModel shape_;  // the links' parents, kinds and coordinates
+  tree::TreeModel shape_;                // the links' parents, kinds and coordinates
+  std::vector<std::size_t> body_links_;  // each body's link (after a planar joint's two slides)
   Tape constants_;     // [t, q, q̇, p] (at t, q, q̇ = 0) → per link m, c, J0, p, R0, a; then g
   Tape joint_forces_;  // [t, q, q̇, p] → τ
   Tape potentials_;    // [t, q, q̇, p] → U of the forces other than gravity
