@@ -108,7 +108,7 @@ void write_connect(MjcfContext& context, const XMLElement& connect, const std::s
   const XmlSource& source = context.source;
   const auto [body1, body2] = two_bodies(context, connect);
   source.required(connect, "anchor");
-  const auto anchor = *source.numbers(connect, "anchor", 3);
+  const auto anchor = source.required_numbers(connect, "anchor", 3);
   const Eigen::Vector3d on_body1(anchor[0].value, anchor[1].value, anchor[2].value);
   // body2's point: where body1's anchor is at qpos0, on body2's frame
   const Eigen::Vector3d on_body2 =

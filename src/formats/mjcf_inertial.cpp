@@ -18,10 +18,10 @@ std::vector<std::vector<Number>> typed_mjcf_tensor(const XmlSource& source,
   }
   const Number zero{"0", 0};
   if (diagonal) {
-    const auto d = *source.numbers(inertial, "diaginertia", 3);
+    const auto d = source.required_numbers(inertial, "diaginertia", 3);
     return {{d[0], zero, zero}, {zero, d[1], zero}, {zero, zero, d[2]}};
   }
-  const auto f = *source.numbers(inertial, "fullinertia", 6);
+  const auto f = source.required_numbers(inertial, "fullinertia", 6);
   return {{f[0], f[3], f[4]}, {f[3], f[1], f[5]}, {f[4], f[5], f[2]}};
 }
 
@@ -68,7 +68,7 @@ std::pair<std::string, std::string> shape_and_volume(const XmlSource& source,
                                                      const XMLElement& geom,
                                                      const std::string& type) {
   const std::size_t count = type == "sphere" ? 1 : type == "cylinder" || type == "capsule" ? 2 : 3;
-  const auto size = *source.numbers(geom, "size", count);
+  const auto size = source.required_numbers(geom, "size", count);
   for (const Number& x : size) {
     if (x.value <= 0) source.refuse(geom, "size", "a geom's size must be positive");
   }
@@ -94,7 +94,7 @@ std::pair<std::string, std::string> shape_and_volume(const XmlSource& source,
 // m_s H (3r + 2H)/8 across the axis.
 std::string capsule_inertia(const XmlSource& source, const XMLElement& geom,
                             const std::string& mass) {
-  const auto size = *source.numbers(geom, "size", 2);
+  const auto size = source.required_numbers(geom, "size", 2);
   const std::string r = size[0].text, H = "(2*" + size[1].text + ")", m = "(" + mass + ")";
   const std::string ms = m + "*4*" + r + "/(4*" + r + " + 3*" + H + ")";
   const std::string mc = "(" + m + " - " + ms + ")";
@@ -165,7 +165,7 @@ std::vector<std::string> inertial_lines(const MjcfContext& context, const XMLEle
   if (!inertial) return {"    mass: 0  # a frame: the body has no <inertial>"};
   ignore_others(source, *inertial, {}, context.ignored);
   if (!inertial->Attribute("mass")) source.refuse(*inertial, "<inertial> needs mass=\"...\"");
-  const Number mass = (*source.numbers(*inertial, "mass", 1))[0];
+  const Number mass = (source.required_numbers(*inertial, "mass", 1))[0];
   if (mass.value < 0) source.refuse(*inertial, "mass", "a mass must be positive or 0 (a frame)");
   if (mass.value == 0) return {"    mass: 0  # a frame: its <inertial> has mass 0"};
   std::vector<std::string> lines = {"    mass: " + mass.text};

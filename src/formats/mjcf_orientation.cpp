@@ -16,7 +16,7 @@ double radians(const MjcfContext& context, const Number& angle) {
 
 // quat="w x y z": MuJoCo's (and the model's) order, divided by its norm by both.
 Orientation from_quat(const MjcfContext& context, const XMLElement& element) {
-  const auto q = *context.source.numbers(element, "quat", 4);
+  const auto q = context.source.required_numbers(element, "quat", 4);
   Eigen::Quaterniond value(q[0].value, q[1].value, q[2].value, q[3].value);
   if (value.norm() == 0) context.source.refuse(element, "quat", "a zero quaternion");
   if (q[1].value == 0 && q[2].value == 0 && q[3].value == 0 && q[0].value > 0) return {};
@@ -25,7 +25,7 @@ Orientation from_quat(const MjcfContext& context, const XMLElement& element) {
 
 // axisangle="x y z a": a turn by a about the axis.
 Orientation from_axis_angle(const MjcfContext& context, const XMLElement& element) {
-  const auto v = *context.source.numbers(element, "axisangle", 4);
+  const auto v = context.source.required_numbers(element, "axisangle", 4);
   const Eigen::Vector3d axis(v[0].value, v[1].value, v[2].value);
   if (axis.norm() == 0) context.source.refuse(element, "axisangle", "a zero axis");
   if (v[3].value == 0) return {};
@@ -37,7 +37,7 @@ Orientation from_axis_angle(const MjcfContext& context, const XMLElement& elemen
 // euler="a b c" of eulerseq xyz (lowercase: about the moving axes): R = Rx(a) Ry(b) Rz(c), the
 // factors that are not 0 as a product of axis-angle rotations.
 Orientation from_euler(const MjcfContext& context, const XMLElement& element) {
-  const auto angles = *context.source.numbers(element, "euler", 3);
+  const auto angles = context.source.required_numbers(element, "euler", 3);
   const char* axes[] = {"[1, 0, 0]", "[0, 1, 0]", "[0, 0, 1]"};
   std::vector<std::string> factors;
   Orientation out;

@@ -25,7 +25,7 @@ std::vector<std::vector<Number>> typed_urdf_tensor(const XmlSource& source,
                                                    const XMLElement& inertia) {
   const auto at = [&](const char* name) {
     if (!inertia.Attribute(name)) source.refuse(inertia, std::string("<inertia> needs ") + name);
-    return (*source.numbers(inertia, name, 1))[0];
+    return (source.required_numbers(inertia, name, 1))[0];
   };
   const Number xx = at("ixx"), xy = at("ixy"), xz = at("ixz"), yy = at("iyy"), yz = at("iyz"),
                zz = at("izz");
@@ -93,7 +93,7 @@ std::vector<std::string> link_body_lines(const LinkContext& context, const XMLEl
     const XMLElement* m = inertial->FirstChildElement("mass");
     if (!m) source.refuse(*inertial, "<inertial> needs <mass value=...>");
     if (!m->Attribute("value")) source.refuse(*m, "<mass> needs value=\"...\"");
-    mass = (*source.numbers(*m, "value", 1))[0];
+    mass = (source.required_numbers(*m, "value", 1))[0];
     if (mass->value < 0) source.refuse(*m, "value", "a mass must be positive or 0 (a frame)");
   }
   if (!mass || mass->value == 0) {

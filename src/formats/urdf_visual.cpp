@@ -21,17 +21,17 @@ bool positive(const std::vector<Number>& numbers) {
 // The shape of <geometry> in the model's words ({box: {a, b, c}}, ...), or "" with the reason.
 std::string shape_text(const XmlSource& source, const XMLElement& geometry, std::string& reason) {
   if (const auto* box = geometry.FirstChildElement("box")) {
-    const auto size = *source.numbers(*box, "size", 3);
+    const auto size = source.required_numbers(*box, "size", 3);
     if (positive(size)) {
       return "{box: {a: " + size[0].text + ", b: " + size[1].text + ", c: " + size[2].text + "}";
     }
   } else if (const auto* cylinder = geometry.FirstChildElement("cylinder")) {
     // URDF's cylinder is along z, the model's along e3: the same axis
-    const Number r = (*source.numbers(*cylinder, "radius", 1))[0];
-    const Number h = (*source.numbers(*cylinder, "length", 1))[0];
+    const Number r = (source.required_numbers(*cylinder, "radius", 1))[0];
+    const Number h = (source.required_numbers(*cylinder, "length", 1))[0];
     if (positive({r, h})) return "{cylinder: {radius: " + r.text + ", height: " + h.text + "}";
   } else if (const auto* sphere = geometry.FirstChildElement("sphere")) {
-    const Number r = (*source.numbers(*sphere, "radius", 1))[0];
+    const Number r = (source.required_numbers(*sphere, "radius", 1))[0];
     if (positive({r})) return "{sphere: {radius: " + r.text + "}";
   } else if (const auto* mesh = geometry.FirstChildElement("mesh")) {
     const char* file = mesh->Attribute("filename");

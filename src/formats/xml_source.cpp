@@ -160,6 +160,12 @@ std::string XmlSource::required(const tinyxml2::XMLElement& element, const char*
 }
 
 // Each whitespace-separated token a decimal number, refused at its own column when it is not.
+std::vector<Number> XmlSource::required_numbers(const tinyxml2::XMLElement& element,
+                                                const char* attribute, std::size_t count) const {
+  required(element, attribute);
+  return *numbers(element, attribute, count);
+}
+
 std::optional<std::vector<Number>> XmlSource::numbers(const tinyxml2::XMLElement& element,
                                                       const char* attribute,
                                                       std::size_t count) const {

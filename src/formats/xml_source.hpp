@@ -55,6 +55,9 @@ class XmlSource {
   // inf), each refused at its own column when it is not one; nullopt when the attribute is absent.
   std::optional<std::vector<Number>> numbers(const tinyxml2::XMLElement& element,
                                              const char* attribute, std::size_t count) const;
+  // The same, a missing attribute refused ("<geom> needs size=").
+  std::vector<Number> required_numbers(const tinyxml2::XMLElement& element, const char* attribute,
+                                       std::size_t count) const;
   // The same, with `fallback` (count numbers' texts) when the attribute is absent.
   std::vector<Number> numbers_or(const tinyxml2::XMLElement& element, const char* attribute,
                                  const std::vector<const char*>& fallback) const;

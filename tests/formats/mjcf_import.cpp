@@ -120,6 +120,9 @@ TEST(MjcfImport, RefusesWithFileLineAndColumn) {
                  "t.xml:3:15: a free joint moves a body of <worldbody> only");
   expect_refused(world("  <body euler=\"0 0 1\"/>\n", "<compiler eulerseq=\"zyx\"/>"),
                  "t.xml:1:39: only eulerseq=\"xyz\" (MuJoCo's default) is supported yet");
+  // (found by the fuzzer: a geom's size read where it was missing)
+  expect_refused(world("  <body><geom type=\"sphere\"/></body>\n"),
+                 "t.xml:3:9: <geom> needs size=\"...\"");
   expect_refused(world("  <body name=\"a\"/>\n", "<equality><tendon tendon1=\"a\"/></equality>"),
                  "t.xml:1:29: <tendon> equality constraints are not supported yet (<connect>, "
                  "<weld> and <joint> are)");
