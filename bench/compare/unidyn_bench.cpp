@@ -145,7 +145,12 @@ int rhs(const std::string& name, const std::map<std::string, std::string>& o) {
     return 0;
   }
   // as `unidyn simulate` compiles it: Kane's equations, or a large tree's recursive dynamics
-  const CompiledSystem compiled(model.system, compile_options(option(o, "--evaluation", "native")));
+  // (--recursive-from N: from N coordinates, instead of simulate's threshold)
+  CompileOptions options = compile_options(option(o, "--evaluation", "native"));
+  if (o.count("--recursive-from")) {
+    options.recursive_from_coordinates = std::stoul(o.at("--recursive-from"));
+  }
+  const CompiledSystem compiled(model.system, options);
   const SimulationStart initial = initial_state(model.system, {});
   CompiledSystemData data = compiled.make_data();
   // --state initial: the model's initial state instead (a model no peer has, the bicycle)

@@ -186,6 +186,11 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion* gi
                                         std::to_string(options.recursive_from_coordinates) +
                                         " coordinates: the compiled equations are faster"}) {
   if (!options.recursive_tree) tree_.why_not = "not asked for";
+  if (closes_loops() && n_ < options.recursive_loops_from_coordinates) {
+    tree_ = {nullptr, "a tree closed by constraints of fewer than " +
+                          std::to_string(options.recursive_loops_from_coordinates) +
+                          " coordinates: the compiled equations are faster"};
+  }
   // a tree's dynamics tape is compiled only when asked for (dynamics()), from the equations given
   // or, with none, Kane's derived then
   if (tree_.tree) {
@@ -220,6 +225,15 @@ CompiledSystem::CompiledSystem(const System& system, const EquationsOfMotion* gi
     rows.constraint_matrix = equations.constraint_matrix;
     rows.constraint_bias = equations.constraint_bias;
     dynamics_ = with_constraint_rows({}, evaluation_form(rows), tape_inputs(system, false));
+  } else if (options.native && options.recorded_tree) {
+    // the articulated-body algorithm as generated code at the parameters' values (none where a
+    // pivot is a number that is not positive: the numeric algorithm then says so at the solve)
+    for (const Parameter& p : system.parameters) recorded_parameters_.push_back(p.value);
+    try {
+      dynamics_ = tree_.tree->recorded_accelerations(recorded_parameters_);
+    } catch (const std::domain_error&) {
+      recorded_parameters_.clear();
+    }
   }
   constraints_ = compile_constraints(system, equations);
   // a tree's energies are its own (TreeEvaluation::energies): the tape computes the outputs
@@ -296,8 +310,11 @@ std::string CompiledSystem::evaluation() const {
   const std::string tree =
       closes_loops() ? "composite-rigid-body M and Newton-Euler forces over the tree, loops "
                        "closed by the constraints, rows and outputs by "
-      : tree_.tree   ? "articulated-body algorithm over the tree, outputs by "
-                     : "";
+      : tree_.tree && dynamics_.output_count() > 0
+          ? "articulated-body algorithm over the tree, recorded at the parameters' values "
+            "(generated code), it and the outputs by "
+      : tree_.tree ? "articulated-body algorithm over the tree, outputs by "
+                   : "";
   return tree + tape_evaluation();
 }
 
@@ -327,15 +344,19 @@ std::size_t CompiledSystem::instruction_count() const {
          observer_.instruction_count() + friction_.instruction_count();
 }
 
-void CompiledSystem::run(const Tape& tape, std::span<const double> inputs,
-                         std::span<double> outputs, CompiledSystemData& data) const {
-  // the native functions: built at once, or by the background compilation once it is ready
-  const std::array<NativeFunction, 4>* functions = native_ ? &native_functions_ : nullptr;
+const std::array<NativeFunction, 4>* CompiledSystem::ready_native_functions() const {
+  // built at once, or by the background compilation once it is ready
+  if (native_) return &native_functions_;
   if (background_ &&
       background_->state.load(std::memory_order_acquire) == BackgroundCompilation::ready) {
-    functions = &background_->functions;
+    return &background_->functions;
   }
-  if (functions) {
+  return nullptr;
+}
+
+void CompiledSystem::run(const Tape& tape, std::span<const double> inputs,
+                         std::span<double> outputs, CompiledSystemData& data) const {
+  if (const std::array<NativeFunction, 4>* functions = ready_native_functions()) {
     const Tape* tapes[] = {&dynamics_, &constraints_, &observer_, &friction_};
     for (std::size_t k = 0; k < 4; ++k) {
       if (tapes[k] != &tape) continue;
@@ -455,6 +476,7 @@ void CompiledSystem::solve_tree(double t, StateRef q, StateRef qdot,
   // the only constraints of a tree with Euler parameters are their unit norms: their multipliers
   // are 0 (tree/euler_parameter_joint.hpp)
   lambda.setZero(static_cast<Eigen::Index>(m_));
+  if (recorded_accelerations(t, q, qdot, parameters, qddot, data)) return;
   try {
     tree_.tree->accelerations(t, q, qdot, parameters, qddot, data.tree);
   } catch (const std::domain_error& error) {
@@ -467,6 +489,26 @@ void CompiledSystem::solve_tree(double t, StateRef q, StateRef qdot,
   if (!qddot.allFinite()) {
     throw NotFiniteState("the accelerations are not finite at t = " + std::to_string(t));
   }
+}
+
+bool CompiledSystem::recorded_accelerations(double t, StateRef q, StateRef qdot,
+                                            std::span<const double> parameters,
+                                            Eigen::VectorXd& qddot,
+                                            CompiledSystemData& data) const {
+  // (by the native code, or the tape until it is ready: the same numbers, so a run does not
+  // depend on when it switches)
+  if (recorded_parameters_.size() != parameters.size() || dynamics_.output_count() < n_ ||
+      !q.allFinite() || !qdot.allFinite() ||
+      !std::equal(parameters.begin(), parameters.end(), recorded_parameters_.begin())) {
+    return false;
+  }
+  const double* out = evaluate_at(dynamics_, t, q, qdot, parameters, data);
+  // q̈, then the pivots: each positive, or the numeric algorithm says which is not
+  for (std::size_t k = n_; k < dynamics_.output_count(); ++k) {
+    if (!(out[k] > 0)) return false;
+  }
+  qddot = Eigen::Map<const Eigen::VectorXd>(out, static_cast<Eigen::Index>(n_));
+  return qddot.allFinite();
 }
 
 void CompiledSystem::solve_loops(double t, StateRef q, StateRef qdot,

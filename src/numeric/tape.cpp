@@ -23,6 +23,7 @@
 #include <utility>
 
 #include "tape_execute.hpp"
+#include "tape_program.hpp"
 #include "unidyn/symbolic/horner_form.hpp"
 
 namespace unidyn {
@@ -33,7 +34,10 @@ using GiNaC::ex;
 using GiNaC::is_a;
 using GiNaC::is_exactly_a;
 
-constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+using detail::kNone;
+using detail::Node;
+using detail::Program;
+using detail::Value;
 // Integer exponents up to this size become multiplications; larger ones use std::pow.
 constexpr long kMaxMultipliedPower = 64;
 
@@ -91,24 +95,6 @@ std::uint64_t mix(std::uint64_t h, std::uint64_t next) {
   return h ^ (next + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2));
 }
 
-// A value during compilation: an input, a constant or a virtual (single-assignment) temporary.
-struct Value {
-  enum class Kind : std::uint8_t { input, constant, temp };
-  Kind kind = Kind::temp;
-  std::uint32_t index = 0;
-
-  auto operator<=>(const Value&) const = default;
-};
-
-// An instruction on virtual registers; dst2 is the cosine of a sincos, else kNone.
-struct Node {
-  TapeOp op;
-  Value a;
-  Value b;
-  std::uint32_t dst;
-  std::uint32_t dst2 = kNone;
-};
-
 // The numeric coefficient of a term of a sum (1 if it has none).
 GiNaC::numeric coefficient(const ex& term) {
   if (is_exactly_a<GiNaC::numeric>(term)) return GiNaC::ex_to<GiNaC::numeric>(term);
@@ -139,14 +125,6 @@ std::optional<std::pair<TapeOp, std::size_t>> function_op(const std::string& nam
   if (found == table.end()) return std::nullopt;
   return found->second;
 }
-
-// The program the passes produce, before it becomes a Tape.
-struct Program {
-  std::vector<double> constants;
-  std::vector<TapeInstruction> instructions;
-  std::vector<std::uint32_t> outputs;
-  std::size_t register_count = 0;
-};
 
 // Pass 1: expressions → SSA instructions, with CSE and constant folding.
 class Builder {
@@ -516,145 +494,6 @@ class Builder {
   std::uint32_t temp_count_ = 0;
 };
 
-// Pass 2: sin(a) and cos(a) become one sincos at the earlier of the two places.
-void fuse_sincos(std::vector<Node>& nodes) {
-  std::map<Value, std::size_t> sines, cosines;
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    if (nodes[i].op == TapeOp::sin) sines.emplace(nodes[i].a, i);
-    if (nodes[i].op == TapeOp::cos) cosines.emplace(nodes[i].a, i);
-  }
-  std::vector<bool> removed(nodes.size(), false);
-  for (const auto& [argument, s] : sines) {
-    const auto c = cosines.find(argument);
-    if (c == cosines.end()) continue;
-    const Node fused{TapeOp::sincos, argument, argument, nodes[s].dst, nodes[c->second].dst};
-    nodes[std::min(s, c->second)] = fused;
-    removed[std::max(s, c->second)] = true;
-  }
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-    if (!removed[i]) nodes[kept++] = nodes[i];
-  nodes.resize(kept);
-}
-
-// Pass 3: drop instructions none of whose results reach an output.
-void remove_dead(std::vector<Node>& nodes, const std::vector<Value>& outputs,
-                 std::uint32_t temp_count) {
-  std::vector<bool> live(temp_count, false);
-  const auto mark = [&](Value v) {
-    if (v.kind == Value::Kind::temp) live[v.index] = true;
-  };
-  for (const Value& v : outputs) mark(v);
-  std::vector<bool> keep(nodes.size(), false);
-  for (std::size_t i = nodes.size(); i-- > 0;) {
-    const Node& n = nodes[i];
-    keep[i] = live[n.dst] || (n.dst2 != kNone && live[n.dst2]);
-    if (!keep[i]) continue;
-    mark(n.a);
-    mark(n.b);
-  }
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-    if (keep[i]) nodes[kept++] = nodes[i];
-  nodes.resize(kept);
-}
-
-// Pass 4: constants renumbered to those still used, temporaries mapped to physical registers
-// that are reused once their last reader has run.
-class RegisterAllocator {
- public:
-  RegisterAllocator(std::size_t input_count, const std::vector<double>& constants,
-                    const std::vector<Node>& nodes, const std::vector<Value>& outputs,
-                    std::uint32_t temp_count)
-      : input_count_(static_cast<std::uint32_t>(input_count)),
-        constant_slot_(constants.size(), kNone),
-        temp_slot_(temp_count, kNone),
-        last_use_(temp_count, kNone) {
-    collect_constants(constants, nodes, outputs);
-    find_last_uses(nodes, outputs);
-    next_ = input_count_ + static_cast<std::uint32_t>(program_.constants.size());
-    for (std::size_t i = 0; i < nodes.size(); ++i) lower(nodes[i], i);
-    for (const Value& v : outputs) program_.outputs.push_back(slot(v));
-    program_.register_count = next_;
-  }
-
-  Program take() { return std::move(program_); }
-
- private:
-  // Keep the constants some instruction or output reads, in first-use order.
-  void collect_constants(const std::vector<double>& constants, const std::vector<Node>& nodes,
-                         const std::vector<Value>& outputs) {
-    const auto use = [&](Value v) {
-      if (v.kind != Value::Kind::constant || constant_slot_[v.index] != kNone) return;
-      constant_slot_[v.index] =
-          input_count_ + static_cast<std::uint32_t>(program_.constants.size());
-      program_.constants.push_back(constants[v.index]);
-    };
-    for (const Node& n : nodes) {
-      use(n.a);
-      use(n.b);
-    }
-    for (const Value& v : outputs) use(v);
-  }
-
-  // Index of the last instruction reading each temporary; outputs live to the end.
-  void find_last_uses(const std::vector<Node>& nodes, const std::vector<Value>& outputs) {
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      for (const Value& v : {nodes[i].a, nodes[i].b})
-        if (v.kind == Value::Kind::temp) last_use_[v.index] = static_cast<std::uint32_t>(i);
-    }
-    for (const Value& v : outputs)
-      if (v.kind == Value::Kind::temp) last_use_[v.index] = kForever;
-  }
-
-  // Read operands, release the registers they die in, then give the results registers.
-  void lower(const Node& n, std::size_t i) {
-    const std::uint32_t a = slot(n.a), b = slot(n.b);
-    release_if_last(n.a, i);
-    if (n.b != n.a) release_if_last(n.b, i);
-    const std::uint32_t dst = acquire(n.dst);
-    const std::uint32_t dst2 = n.dst2 == kNone ? kNone : acquire(n.dst2);
-    if (last_use_[n.dst] == kNone) free_.push_back(dst);
-    if (dst2 != kNone && last_use_[n.dst2] == kNone) free_.push_back(dst2);
-    program_.instructions.push_back(TapeInstruction{n.op, dst, a, dst2 == kNone ? b : dst2});
-  }
-
-  void release_if_last(Value v, std::size_t i) {
-    if (v.kind == Value::Kind::temp && last_use_[v.index] == i)
-      free_.push_back(temp_slot_[v.index]);
-  }
-
-  std::uint32_t acquire(std::uint32_t temp) {
-    std::uint32_t r = next_;
-    if (free_.empty()) {
-      ++next_;
-    } else {
-      r = free_.back();
-      free_.pop_back();
-    }
-    temp_slot_[temp] = r;
-    return r;
-  }
-
-  std::uint32_t slot(Value v) const {
-    switch (v.kind) {
-      case Value::Kind::input:
-        return v.index;
-      case Value::Kind::constant:
-        return constant_slot_[v.index];
-      case Value::Kind::temp:
-        return temp_slot_[v.index];
-    }
-    return kNone;
-  }
-
-  static constexpr std::uint32_t kForever = kNone - 1;
-  std::uint32_t input_count_;
-  std::vector<std::uint32_t> constant_slot_, temp_slot_, last_use_, free_;
-  std::uint32_t next_ = 0;
-  Program program_;
-};
-
 }  // namespace
 
 void TapeWorkspace::reserve(const Tape& tape) {
@@ -677,11 +516,10 @@ Tape Tape::compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNa
   }
   // Passes 2–4.
   std::vector<Node>& nodes = builder.nodes();
-  fuse_sincos(nodes);
-  remove_dead(nodes, values, builder.temp_count());
-  RegisterAllocator allocator(inputs.size(), builder.constants(), nodes, values,
-                              builder.temp_count());
-  Program program = allocator.take();
+  detail::fuse_sincos(nodes);
+  detail::remove_dead(nodes, values, builder.temp_count());
+  Program program = detail::allocate_registers(inputs.size(), builder.constants(), nodes, values,
+                                               builder.temp_count());
   // The tape itself.
   Tape tape;
   for (const ex& s : inputs) tape.input_names_.push_back(GiNaC::ex_to<GiNaC::symbol>(s).get_name());

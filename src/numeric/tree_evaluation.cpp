@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "unidyn/numeric/compiled_system.hpp"
+#include "unidyn/numeric/recorded_tree.hpp"
 #include "unidyn/symbolic/derivative.hpp"
 
 namespace unidyn {
@@ -347,6 +348,14 @@ void TreeEvaluation::accelerations(double t, tree::TreeVector q, tree::TreeVecto
                                    TreeEvaluationData& data) const {
   prepare(t, q, qdot, parameters, data);
   tree::articulated_body_accelerations(data.model, q, qdot, data.joint_forces, qddot, data.tree);
+}
+
+Tape TreeEvaluation::recorded_accelerations(std::span<const double> parameters) const {
+  TreeEvaluationData data = make_data();
+  const Eigen::VectorXd q = Eigen::Map<const Eigen::VectorXd>(
+      reference_.data(), static_cast<Eigen::Index>(reference_.size()));
+  prepare(0, q, Eigen::VectorXd::Zero(q.size()), parameters, data);
+  return record_tree_accelerations(data.model, joint_forces_, parameters);
 }
 
 void TreeEvaluation::energies(double t, tree::TreeVector q, tree::TreeVector qdot,

@@ -21,7 +21,8 @@ void inverse_dynamics_bias(const TreeModel& model, TreeVector q, TreeVector qdot
     const TreeLink& link = model.links[i];
     LinkData& d = data.links[i];
     d.acceleration = carried_acceleration(model, data, i);
-    d.force = link.inertia * d.acceleration + wrench_cross(d.velocity, link.inertia * d.velocity);
+    d.force = link.inertia * d.acceleration +
+              wrench_cross(d.velocity, Vector6d(link.inertia * d.velocity));
   }
   bias.resize(static_cast<Eigen::Index>(model.coordinates));
   for (std::size_t k = model.links.size(); k-- > 0;) {

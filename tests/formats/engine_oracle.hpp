@@ -21,6 +21,7 @@
 #include "unidyn/equations/lagrange.hpp"
 #include "unidyn/integrate/simulation.hpp"
 #include "unidyn/numeric/compiled_system.hpp"
+#include "unidyn/numeric/tree_evaluation.hpp"
 
 namespace unidyn::engine_oracle {
 namespace {
@@ -80,6 +81,29 @@ Dynamics symbolic_dynamics(const CompiledSystem& compiled, const std::vector<dou
   return {M, f, M.ldlt().solve(f)};
 }
 
+// q̈ by the articulated-body algorithm recorded at the parameters (numeric/recorded_tree.hpp), its
+// tape evaluated: the program the native code runs. Its pivots are positive.
+Eigen::VectorXd recorded_accelerations(const Tape& recorded, const std::vector<double>& parameters,
+                                       const Eigen::VectorXd& q, const Eigen::VectorXd& qdot) {
+  std::vector<double> inputs{0.0};
+  inputs.insert(inputs.end(), q.begin(), q.end());
+  inputs.insert(inputs.end(), qdot.begin(), qdot.end());
+  inputs.insert(inputs.end(), parameters.begin(), parameters.end());
+  const std::vector<double> out = recorded.evaluate(inputs);
+  EXPECT_GT(out.size(), static_cast<std::size_t>(q.size())) << "no pivot watched";
+  for (std::size_t k = static_cast<std::size_t>(q.size()); k < out.size(); ++k) {
+    EXPECT_GT(out[k], 0.0) << "pivot " << k - static_cast<std::size_t>(q.size());
+  }
+  return Eigen::Map<const Eigen::VectorXd>(out.data(), q.size());
+}
+
+// The tape of the recorded algorithm for the system at its parameters' values.
+Tape recorded_tape(const System& system, const std::vector<double>& parameters) {
+  const TreePlan plan = plan_tree(system);
+  EXPECT_TRUE(plan.tree) << plan.why_not;
+  return plan.tree ? plan.tree->recorded_accelerations(parameters) : Tape();
+}
+
 // The largest relative errors of M, f and q̈ of one evaluation against the engine's.
 struct Errors {
   double M = 0, f = 0, qddot = 0;
@@ -117,6 +141,7 @@ LoadedFile load_and_compile(const std::string& file, Paths paths) {
   result.load_time = seconds_since(start);
   CompileOptions options;
   options.recursive_from_coordinates = 0;  // the recursive algorithms at every size
+  options.recursive_loops_from_coordinates = 0;
   // the compiled equations only when they are compared: the recursive ones need no derivation
   const System& system = result.loaded.system;
   start = std::chrono::steady_clock::now();
@@ -141,13 +166,18 @@ void expect_agreement(const std::string& file, const LoadedFile& unidyn, Paths p
   const CompiledSystem& compiled = *unidyn.compiled;
   CompiledSystemData data = compiled.make_data();
   const std::vector<double> parameters = initial_state(unidyn.loaded.system, {}).parameters;
+  const Tape recorded = recorded_tape(unidyn.loaded.system, parameters);
   test::Random random;
   Errors recursive, symbolic;
+  double recorded_error = 0;
   for (int k = 0; k < 20; ++k) {
     Eigen::VectorXd q, qdot;
     engine.random_state(random, q, qdot);
     const Dynamics reference = engine.dynamics(q, qdot);
     recursive.add(unidyn_dynamics(compiled, parameters, data, q, qdot), reference);
+    recorded_error =
+        std::max(recorded_error,
+                 relative(recorded_accelerations(recorded, parameters, q, qdot), reference.qddot));
     if (paths == Paths::both) {
       symbolic.add(symbolic_dynamics(compiled, parameters, q, qdot), reference);
     }
@@ -157,15 +187,17 @@ void expect_agreement(const std::string& file, const LoadedFile& unidyn, Paths p
     EXPECT_LT(e->f, kTolerance) << (e == &symbolic ? "symbolic" : "recursive");
     EXPECT_LT(e->qddot, kTolerance) << (e == &symbolic ? "symbolic" : "recursive");
   }
+  EXPECT_LT(recorded_error, kTolerance) << "recorded";
   test::record("M_error", std::max(recursive.M, symbolic.M));
   test::record("f_error", std::max(recursive.f, symbolic.f));
   test::record("qddot_error", std::max(recursive.qddot, symbolic.qddot));
   std::printf(
       "%s against %s: relative errors of the recursive algorithms M %.3g, f %.3g, q'' %.3g; of "
-      "the compiled equations M %.3g, f %.3g, q'' %.3g (0: not compared); unidyn's load %.3f s, "
-      "derive %.3f s, compile %.3f s\n",
+      "the compiled equations M %.3g, f %.3g, q'' %.3g (0: not compared); q'' of the recorded "
+      "algorithm (%zu instructions) %.3g; unidyn's load %.3f s, derive %.3f s, compile %.3f s\n",
       file.c_str(), engine.name.c_str(), recursive.M, recursive.f, recursive.qddot, symbolic.M,
-      symbolic.f, symbolic.qddot, unidyn.load_time, unidyn.derive_time, unidyn.compile_time);
+      symbolic.f, symbolic.qddot, recorded.instruction_count(), recorded_error, unidyn.load_time,
+      unidyn.derive_time, unidyn.compile_time);
 }
 
 }  // namespace

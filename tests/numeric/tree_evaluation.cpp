@@ -1,8 +1,9 @@
 // A model of tree joints evaluated recursively (numeric/tree_evaluation.hpp) against the same
 // model's compiled Lagrange's equations (equations/lagrange.hpp: the book's (3.7) derived
 // symbolically, M and f on the tape), with parameters, a torsion spring and damper on joint angles,
-// a potential in the coordinates and a fixed joint; ball and floating joints against Kane's
-// equations in Euler parameters; and the systems the recursive path refuses, with the reason.
+// a potential in the coordinates and a fixed joint (also recorded as generated code); ball and
+// floating joints against Kane's equations in Euler parameters; and the systems the recursive path
+// refuses, with the reason.
 #include <gtest/gtest.h>
 
 #include "support/oracles.hpp"
@@ -56,6 +57,7 @@ CompileOptions options(bool recursive) {
   CompileOptions options;
   options.recursive_tree = recursive;
   options.recursive_from_coordinates = 0;
+  options.recursive_loops_from_coordinates = 0;
   return options;
 }
 
@@ -114,6 +116,79 @@ TEST(TreeEvaluation, AgreesWithTheCompiledLagrangesEquations) {
       worst_difference(kTree, {{1.4, 0.6, 3.0, 0.2, 9.81}, {2.1, 0.9, 5.0, 0.7, 3.7}});
   test::record("relative_error", worst);
   EXPECT_LT(worst, 1e-12);
+}
+
+CompileOptions native_tree() {
+  CompileOptions options;
+  options.native = true;
+  options.recursive_from_coordinates = 0;
+  return options;
+}
+
+// The largest relative difference of q̈ at 20 random states: the recorded algorithm (or, at other
+// parameters, the numeric one) against the compiled Lagrange's equations.
+double recorded_difference(const CompiledSystem& recorded, const CompiledSystem& equations,
+                           const std::vector<double>& parameters) {
+  CompiledSystemData data = recorded.make_data(), other = equations.make_data();
+  const auto n = static_cast<Eigen::Index>(recorded.coordinate_count());
+  test::Random random;
+  double worst = 0;
+  for (int k = 0; k < 20; ++k) {
+    Eigen::VectorXd q(n), qdot(n), ours, theirs, lambda;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      q[i] = random.uniform(-2, 2);
+      qdot[i] = random.uniform(-2, 2);
+    }
+    recorded.solve(0, q, qdot, parameters, ours, lambda, data);
+    equations.solve(0, q, qdot, parameters, theirs, lambda, other);
+    worst = std::max(worst, (ours - theirs).norm() / theirs.norm());
+  }
+  return worst;
+}
+
+// The algorithm recorded as generated code (numeric/recorded_tree.hpp), as `simulate` runs it
+// (with native code): q̈ against the compiled Lagrange's equations at the parameters it was
+// recorded at and at others (then the numeric algorithm).
+TEST(TreeEvaluation, RecordedAlgorithmAgreesWithTheCompiledLagrangesEquations) {
+  const System system = parse_model(kTree, "tree.yaml");
+  const EquationsOfMotion equations = lagrange_equations(system);
+  CompileOptions compiled_options;
+  compiled_options.recursive_tree = false;
+  const CompiledSystem recorded(system, native_tree()),
+      compiled(system, equations, compiled_options);
+  EXPECT_EQ(recorded.evaluation().rfind("articulated-body algorithm over the tree, recorded", 0),
+            0u)
+      << recorded.evaluation();
+  // the parameters it was recorded at, then others (the numeric algorithm)
+  const double at_recording = recorded_difference(recorded, compiled, {1.4, 0.6, 3.0, 0.2, 9.81});
+  const double elsewhere = recorded_difference(recorded, compiled, {2.1, 0.9, 5.0, 0.7, 3.7});
+  test::record("relative_error", std::max(at_recording, elsewhere));
+  EXPECT_LT(at_recording, 1e-12);
+  EXPECT_LT(elsewhere, 1e-12);
+}
+
+// A carriage of no mass on the slide: the inertia along its joint is 0, a number when recorded. No
+// recording then; the solve refuses with the numeric algorithm's reason.
+TEST(TreeEvaluation, RecordedAlgorithmRefusesAJointWithNothingBeyondIt) {
+  std::string text = kTree;
+  const std::string carriage = "mass: 0.5\n    inertia: [0.001, 0.001, 0.001]";
+  text.replace(text.find(carriage), carriage.size(), "mass: 0\n    inertia: [0, 0, 0]");
+  const System system = parse_model(text, "massless-carriage.yaml");
+  const CompiledSystem recorded(system, native_tree());
+  EXPECT_EQ(recorded.evaluation().find("recorded"), std::string::npos) << recorded.evaluation();
+  CompiledSystemData data = recorded.make_data();
+  const Eigen::VectorXd q = Eigen::VectorXd::Constant(4, 0.3), qdot = Eigen::VectorXd::Zero(4);
+  Eigen::VectorXd qddot, lambda;
+  const std::vector<double> parameters{1.4, 0.6, 3.0, 0.2, 9.81};
+  try {
+    recorded.solve(0, q, qdot, parameters, qddot, lambda, data);
+    ADD_FAILURE() << "solved";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(
+        std::string(error.what()).find("joint of coordinate 3 about its axis is not positive"),
+        std::string::npos)
+        << error.what();
+  }
 }
 
 // A planar joint (three links: slides along E3 and E1 of a turned joint frame, a turn about −E2)

@@ -113,9 +113,19 @@ struct CompileOptions {
   // A kinematic tree's q̈ by the articulated-body algorithm (numeric/tree_evaluation.hpp) rather
   // than from the compiled M and f.
   bool recursive_tree = true;
-  // ... from this many coordinates: below, the compiled equations are faster (bench/ part 10: the
-  // 7-DoF arm's 1.2 µs against the algorithm's 1.6 µs; a 20-link chain's 7.9 µs against 3.8 µs).
-  std::size_t recursive_from_coordinates = 10;
+  // ... from this many coordinates: below, the compiled equations are faster (bench/ part 10,
+  // native code: the acrobot's 76 ns against the recorded algorithm's 92 ns, a planar 3-link
+  // arm's 106 against 124 ns; the 7-DoF arm's 1175 ns against 545 ns).
+  std::size_t recursive_from_coordinates = 5;
+  // ... and, for a tree closed by constraints (its M and f by the numeric algorithms), also from
+  // this many: below, the compiled equations are faster (a welded 7-joint loop: 1.9 µs against
+  // 3.1 µs).
+  std::size_t recursive_loops_from_coordinates = 10;
+  // With native code, a tree's articulated-body algorithm recorded as generated code at the
+  // parameters' given values (numeric/recorded_tree.hpp), its tape evaluated until the native
+  // code is ready (the same numbers); other parameter values, and a pivot that is not positive,
+  // take the numeric algorithm.
+  bool recorded_tree = true;
   // Told the name of each phase as it ends ("derive (kane)" when the equations are derived here).
   std::function<void(std::string_view)> phase_ended;
 };
@@ -244,6 +254,13 @@ class CompiledSystem {
   const double* evaluate_at(const Tape& tape, double t, StateRef q, StateRef qdot,
                             std::span<const double> parameters, CompiledSystemData& data) const;
 
+  // q̈ by the recorded articulated-body algorithm's native code; false where it does not hold
+  // (other parameters, no native code yet, a state that is not finite, a pivot not positive).
+  bool recorded_accelerations(double t, StateRef q, StateRef qdot,
+                              std::span<const double> parameters, Eigen::VectorXd& qddot,
+                              CompiledSystemData& data) const;
+  // The native functions, once built (null until then).
+  const std::array<NativeFunction, 4>* ready_native_functions() const;
   // outputs = tape(inputs), by its native function when there is one.
   void run(const Tape& tape, std::span<const double> inputs, std::span<double> outputs,
            CompiledSystemData& data) const;
@@ -254,8 +271,10 @@ class CompiledSystem {
   // M and c from the partial velocities; null: M and f on the tape
   std::shared_ptr<const InertiaAssembly> assembly_;
   // [t, q, q̇, p] → M, f, A, b; or, with assembly_, → Φ − ∂U/∂q, the assembly's values, A, b; of
-  // a tree closed by constraints (closes_loops()) → A, b; of another tree, none
+  // a tree closed by constraints (closes_loops()) → A, b; of another tree, with native code, its
+  // recorded articulated-body algorithm → q̈, the pivots (at recorded_parameters_), else none
   Tape dynamics_;
+  std::vector<double> recorded_parameters_;
   // with assembly_: the M, f, A, b tape, compiled at the first call of dynamics()
   std::shared_ptr<DeferredTape> full_dynamics_;
   Tape constraints_;  // [t, q, q̇, p] → A, e, Ψ

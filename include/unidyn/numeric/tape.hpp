@@ -100,6 +100,7 @@ class Tape {
   }
 
   std::size_t input_count() const { return input_names_.size(); }
+  const std::string& input_name(std::size_t k) const { return input_names_.at(k); }
   std::size_t output_count() const { return output_registers_.size(); }
   std::size_t instruction_count() const { return instructions_.size(); }
   // Registers for inputs, constants and temporaries: the doubles a workspace needs.
@@ -129,6 +130,7 @@ class Tape {
   std::span<const std::uint32_t> output_registers() const { return output_registers_; }
 
  private:
+  friend class TapeRecorder;  // the other writer of programs (numeric/tape_recorder.hpp)
   std::vector<std::string> input_names_;       // registers [0, input_count)
   std::vector<double> constants_;              // registers [input_count, input_count + constants)
   std::vector<TapeInstruction> instructions_;  // temporaries after the constants

@@ -63,6 +63,9 @@ class TreeEvaluation {
   // Whether mass_and_forcing() is defined: not for a ball or floating joint (the model
   // language's M in Euler parameters is not the tree's; CompiledSystem takes the equations).
   bool forms_mass_matrix() const { return forms_mass_matrix_; }
+  // q̈'s tape recorded at `parameters`: inputs [t, q, q̇, p], outputs q̈ and the pivots
+  // (numeric/recorded_tree.hpp).
+  Tape recorded_accelerations(std::span<const double> parameters) const;
   // M and f of M q̈ = f: f = τ − b.
   void mass_and_forcing(double t, tree::TreeVector q, tree::TreeVector qdot,
                         std::span<const double> parameters, Eigen::MatrixXd& M, Eigen::VectorXd& f,

@@ -11,9 +11,18 @@
 
 namespace unidyn::tree {
 
-// q̈ of the tree under the joint forces τ (one per coordinate).
-void articulated_body_accelerations(const TreeModel& model, TreeVector q, TreeVector qdot,
-                                    TreeVector tau, Eigen::VectorXd& qddot, TreeData& data);
+// q̈ of the tree under the joint forces τ (one per coordinate); a template over the scalar
+// (articulated_body.hpp), double's compiled once.
+template <class S>
+void articulated_body_accelerations(const TreeModel& model,
+                                    std::type_identity_t<BasicTreeVector<S>> q,
+                                    std::type_identity_t<BasicTreeVector<S>> qdot,
+                                    std::type_identity_t<BasicTreeVector<S>> tau,
+                                    Eigen::Matrix<S, Eigen::Dynamic, 1>& qddot,
+                                    BasicTreeData<S>& data);
+extern template void articulated_body_accelerations<double>(const TreeModel&, TreeVector,
+                                                            TreeVector, TreeVector,
+                                                            Eigen::VectorXd&, TreeData&);
 
 // M(q), n × n, both triangles. One-coordinate joints only (std::invalid_argument for a ball or
 // floating joint: the model language's M in Euler parameters is not the tree's).

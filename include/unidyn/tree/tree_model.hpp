@@ -19,6 +19,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <type_traits>
 #include <vector>
 
 #include "unidyn/tree/spatial.hpp"
@@ -43,36 +44,44 @@ struct TreeModel {
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // g, on the ground's basis
 };
 
-// One link's numbers during an evaluation.
-struct LinkData {
-  FramePlacement placement;               // E_i, r_i from the parent
-  Vector6d velocity, bias, acceleration;  // V_i; c_i = V_i × S q̇; the twist rate
-  Matrix6d articulated;                   // I^A_i (ABA) or the composite inertia I^c_i (CRBA)
-  Vector6d force;                // p^A_i (ABA) or the wrench of the inverse dynamics (RNEA)
-  Vector6d inertia_axis;         // U_i = I^A_i S (ABA)
-  double pivot = 0, torque = 0;  // D_i = Sᵀ U_i, u_i = τ_i − Sᵀ p^A_i (ABA)
+// One link's numbers during an evaluation (S: double, or a recording scalar).
+template <class S>
+struct BasicLinkData {
+  BasicFramePlacement<S> placement;         // E_i, r_i from the parent
+  Vector6<S> velocity, bias, acceleration;  // V_i; c_i = V_i × S q̇; the twist rate
+  Matrix6<S> articulated;                   // I^A_i (ABA) or the composite inertia I^c_i (CRBA)
+  Vector6<S> force;               // p^A_i (ABA) or the wrench of the inverse dynamics (RNEA)
+  Vector6<S> inertia_axis;        // U_i = I^A_i S (ABA)
+  S pivot = S(0), torque = S(0);  // D_i = Sᵀ U_i, u_i = τ_i − Sᵀ p^A_i (ABA)
 };
+using LinkData = BasicLinkData<double>;
 
 // q, q̇, τ: a vector or a segment of one, taken without a copy.
-using TreeVector = Eigen::Ref<const Eigen::VectorXd>;
+template <class S>
+using BasicTreeVector = Eigen::Ref<const Eigen::Matrix<S, Eigen::Dynamic, 1>>;
+using TreeVector = BasicTreeVector<double>;
 
 // A ball or floating joint's numbers during an evaluation (euler_parameter_joint.hpp).
-struct EulerJointData {
+template <class S>
+struct BasicEulerJointData {
   // the Euler parameters as the unit ê = e / s, s = |e|, and the rates ṡ, ê̇
-  Eigen::Vector4d unit = Eigen::Vector4d::UnitX(), unit_rate = Eigen::Vector4d::Zero();
-  double norm = 1, norm_rate = 0;
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // R(ê)
-  Vector6d rate = Vector6d::Zero();  // the joint's twist ν = (ω, v) on the link's basis
+  Eigen::Matrix<S, 4, 1> unit = Eigen::Matrix<S, 4, 1>::UnitX(),
+                         unit_rate = Eigen::Matrix<S, 4, 1>::Zero();
+  S norm = S(1), norm_rate = S(0);
+  Matrix3<S> rotation = Matrix3<S>::Identity();  // R(ê)
+  Vector6<S> rate = Vector6<S>::Zero();  // the joint's twist ν = (ω, v) on the link's basis
   // ABA: U = I^A S, D⁻¹ = (Sᵀ I^A S)⁻¹ and u = −Sᵀ p^A (k = 3 or 6 of the 6 rows)
-  Matrix6d inertia_axes = Matrix6d::Zero(), inverse_pivot = Matrix6d::Zero();
-  Vector6d torque = Vector6d::Zero();
+  Matrix6<S> inertia_axes = Matrix6<S>::Zero(), inverse_pivot = Matrix6<S>::Zero();
+  Vector6<S> torque = Vector6<S>::Zero();
 };
+using EulerJointData = BasicEulerJointData<double>;
 
-struct TreeData {
-  std::vector<LinkData> links;
-  std::vector<EulerJointData> euler;  // per link; empty when no link has a ball or floating joint
-  TreeData() = default;
-  explicit TreeData(const TreeModel& model) : links(model.links.size()) {
+template <class S>
+struct BasicTreeData {
+  std::vector<BasicLinkData<S>> links;
+  std::vector<BasicEulerJointData<S>> euler;  // per link; empty when no link has one
+  BasicTreeData() = default;
+  explicit BasicTreeData(const TreeModel& model) : links(model.links.size()) {
     for (const TreeLink& link : model.links) {
       if (link.kind == JointKind::ball || link.kind == JointKind::floating) {
         euler.resize(model.links.size());
@@ -80,6 +89,7 @@ struct TreeData {
     }
   }
 };
+using TreeData = BasicTreeData<double>;
 
 // Whether the link's joint is a ball or floating joint (several twist components).
 inline bool has_euler_parameters(const TreeLink& link) {
@@ -102,8 +112,12 @@ inline Vector6d joint_axis(const TreeLink& link) {
   return S;
 }
 
-// Each link's placement E_i, r_i at q.
-void tree_placements(const TreeModel& model, TreeVector q, TreeData& data);
+// Each link's placement E_i, r_i at q. (The passes are templates over the scalar, defined in
+// tree_kinematics.hpp; double's are compiled once, in src/tree/.)
+template <class S>
+void tree_placements(const TreeModel& model, std::type_identity_t<BasicTreeVector<S>> q,
+                     BasicTreeData<S>& data);
+extern template void tree_placements<double>(const TreeModel&, TreeVector, TreeData&);
 
 // The ground's acceleration, (0, −g): gravity as a fictitious lift of the whole tree.
 inline Vector6d ground_acceleration(const TreeModel& model) {
@@ -114,16 +128,22 @@ inline Vector6d ground_acceleration(const TreeModel& model) {
 
 // A_i = X_i A_parent + c_i (the ground's (0, −g) for a root): link i's acceleration while its own
 // joint does not accelerate.
-inline Vector6d carried_acceleration(const TreeModel& model, const TreeData& data, std::size_t i) {
+template <class S>
+Vector6<S> carried_acceleration(const TreeModel& model, const BasicTreeData<S>& data,
+                                std::size_t i) {
   const int parent = model.links[i].parent;
-  const LinkData& d = data.links[i];
-  const Vector6d A_parent = parent < 0 ? ground_acceleration(model)
-                                       : data.links[static_cast<std::size_t>(parent)].acceleration;
+  const BasicLinkData<S>& d = data.links[i];
+  const Vector6<S> A_parent = parent < 0
+                                  ? Vector6<S>(ground_acceleration(model).template cast<S>())
+                                  : data.links[static_cast<std::size_t>(parent)].acceleration;
   return twist_to_child(d.placement, A_parent) + d.bias;
 }
 
 // Pass 1 of every algorithm: each link's placement, twist V_i = X_i V_parent + S q̇ and bias
 // c_i = V_i × S q̇ at (q, q̇).
-void tree_kinematics(const TreeModel& model, TreeVector q, TreeVector qdot, TreeData& data);
+template <class S>
+void tree_kinematics(const TreeModel& model, std::type_identity_t<BasicTreeVector<S>> q,
+                     std::type_identity_t<BasicTreeVector<S>> qdot, BasicTreeData<S>& data);
+extern template void tree_kinematics<double>(const TreeModel&, TreeVector, TreeVector, TreeData&);
 
 }  // namespace unidyn::tree
