@@ -2,6 +2,7 @@
 #include "unidyn/numeric/tape_recorder.hpp"
 
 #include <bit>
+#include <optional>
 #include <stdexcept>
 
 #include "tape_execute.hpp"
@@ -63,15 +64,20 @@ Recorded TapeRecorder::apply(TapeOp op, const Recorded& a, const Recorded& b) {
   if (a.is_constant() && (unary || b.is_constant())) {
     return Recorded(computed(op, a.constant(), unary ? 0.0 : b.constant()));
   }
-  // results known without an instruction (exact for finite values)
+  // results known without an instruction (exact for finite values), and negations taken into
+  // the operation that reads them (exact: IEEE rounding is symmetric about 0)
+  const std::optional<Recorded> minus_a = negated(a), minus_b = unary ? std::nullopt : negated(b);
   switch (op) {
     case TapeOp::add:
       if (is_number(a, 0)) return b;
       if (is_number(b, 0)) return a;
+      if (minus_b) return apply(TapeOp::sub, a, *minus_b);  // a + (−v) = a − v
+      if (minus_a) return apply(TapeOp::sub, b, *minus_a);  // (−u) + b = b − u
       break;
     case TapeOp::sub:
       if (is_number(b, 0)) return a;
       if (is_number(a, 0)) return apply(TapeOp::neg, b);
+      if (minus_b) return apply(TapeOp::add, a, *minus_b);  // a − (−v) = a + v
       break;
     case TapeOp::mul:
       if (is_number(a, 0) || is_number(b, 0)) return Recorded(0.0);
@@ -79,16 +85,16 @@ Recorded TapeRecorder::apply(TapeOp op, const Recorded& a, const Recorded& b) {
       if (is_number(b, 1)) return a;
       if (is_number(a, -1)) return apply(TapeOp::neg, b);
       if (is_number(b, -1)) return apply(TapeOp::neg, a);
+      if (minus_a && minus_b) return apply(TapeOp::mul, *minus_a, *minus_b);  // (−u)(−v) = u v
+      if (minus_a && b.is_constant()) return apply(TapeOp::mul, *minus_a, -b.constant());
+      if (minus_b && a.is_constant()) return apply(TapeOp::mul, -a.constant(), *minus_b);
       break;
     case TapeOp::div:
       if (is_number(b, 1)) return a;
+      if (minus_a && b.is_constant()) return apply(TapeOp::div, *minus_a, -b.constant());
       break;
     case TapeOp::neg:
-      if (!a.input_) {
-        const Node& n = program_->nodes[a.index_];
-        if (n.op == TapeOp::neg)
-          return constant_or_value(static_cast<std::uint32_t>(n.a.kind), n.a.index);
-      }
+      if (minus_a) return *minus_a;  // −(−x) = x
       break;
     default:
       break;
@@ -118,6 +124,13 @@ Recorded TapeRecorder::apply(TapeOp op, const Recorded& a, const Recorded& b) {
     ++program_->temp_count;
   }
   return constant_or_value(static_cast<std::uint32_t>(Value::Kind::temp), temp);
+}
+
+std::optional<Recorded> TapeRecorder::negated(const Recorded& x) {
+  if (x.is_constant() || x.input_) return std::nullopt;
+  const Node& n = program_->nodes[x.index_];
+  if (n.op != TapeOp::neg) return std::nullopt;
+  return constant_or_value(static_cast<std::uint32_t>(n.a.kind), n.a.index);
 }
 
 Recorded TapeRecorder::constant_or_value(std::uint32_t kind, std::uint32_t index) {

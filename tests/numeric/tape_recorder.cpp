@@ -38,8 +38,8 @@ TEST(TapeRecorder, GivesWhatTheFunctionGivesOnDoubles) {
   }
 }
 
-// The folding: x·0, x·1, −(−x), x/1, x + 0 and the constant 3·4 leave no instruction; c·y and
-// y·c are one product; sin and cos of x one sincos. What remains: sincos, c·y, s·(1)… counted.
+// The folding: x·0, x·1, −(−x), x/1, x + 0 and the constant 3·4 leave no instruction; u·v and
+// v·u are one product; negations go into what reads them; sin and cos of x are one sincos.
 TEST(TapeRecorder, FoldsWhatIsKnownAndRecordsRepeatsOnce) {
   TapeRecorder recorder({"x", "y"});
   const Recorded x = recorder.input(0), y = recorder.input(1);
@@ -53,6 +53,13 @@ TEST(TapeRecorder, FoldsWhatIsKnownAndRecordsRepeatsOnce) {
   const Recorded u = fresh.input(0), v = fresh.input(1);
   const Tape products = fresh.finish({u * v, v * u, u * v + v * u});
   EXPECT_EQ(products.instruction_count(), 2u);  // one product, one sum
+  // a negation read by +, −, × or ÷ goes into it: x + (−y), (−x)·2, x − (−y), (−x)(−y): four
+  TapeRecorder signs({"x", "y"});
+  const Recorded p = signs.input(0), r = signs.input(1);
+  const Tape negations = signs.finish({p + (-r), (-p) * 2.0, p - (-r), (-p) * (-r)});
+  EXPECT_EQ(negations.instruction_count(), 4u);
+  const std::vector<double> values = negations.evaluate(std::vector<double>{0.3, 1.7});
+  EXPECT_EQ(values, (std::vector<double>{0.3 + (-1.7), (-0.3) * 2.0, 0.3 - (-1.7), 0.3 * 1.7}));
   TapeRecorder trig({"x"});
   const Recorded t = trig.input(0);
   const Tape sincos = trig.finish({sin(t), cos(t)});

@@ -7,7 +7,8 @@
 // TapeRecorder (an input, or the result of an operation on one). An operation on constants is
 // done at once; one on recorded values appends an instruction, except where the result is known
 // without it: x + 0, x − 0, x · 1, x · 0 (= 0), x · (−1) (= −x), x / 1, −(−x), and an operation
-// recorded before on the same operands (value numbering; + and × in either order). These are
+// recorded before on the same operands (value numbering; + and × in either order); a recorded −u
+// read by +, −, × or ÷ is taken into it (a + (−u) = a − u, (−u) · c = u · (−c), …). These are
 // exact in IEEE arithmetic for finite x — x · 0 = 0 assumes x finite, so a recorded tape is for
 // finite inputs (its caller checks them). The recorder's tape then goes through the passes of
 // Tape::compile (sin and cos fused, dead code removed, registers reused), so it evaluates and
@@ -21,6 +22,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <tuple>
@@ -92,6 +94,8 @@ class TapeRecorder {
  private:
   struct Program;
   Recorded constant_or_value(std::uint32_t kind, std::uint32_t index);
+  // u where x is a recorded −u, else none.
+  std::optional<Recorded> negated(const Recorded& x);
   std::vector<std::string> input_names_;
   std::unique_ptr<Program> program_;
   std::vector<Recorded> watched_;

@@ -133,9 +133,11 @@ void articulated_inertias(const TreeModel& model, std::type_identity_t<BasicTree
       d.pivot = along_joint(link, d.inertia_axis);
       d.torque = S(tau[link.coordinate]) - along_joint(link, pa);
       require_positive_pivot(d.pivot, link.coordinate);
-      Ia -= Vector6<S>(d.inertia_axis / d.pivot) * d.inertia_axis.transpose();
+      // one division, by D (eight multiplications by 1/D instead)
+      const S inverse = S(1) / d.pivot;
+      Ia -= Vector6<S>(d.inertia_axis * inverse) * d.inertia_axis.transpose();
       mirror_upper(Ia);
-      pa += Ia * d.bias + d.inertia_axis * S(d.torque / d.pivot);
+      pa += Ia * d.bias + d.inertia_axis * S(d.torque * inverse);
     }
     if (link.parent < 0) continue;
     BasicLinkData<S>& parent = data.links[static_cast<std::size_t>(link.parent)];
@@ -176,7 +178,7 @@ void articulated_body_accelerations(const TreeModel& model,
       continue;
     }
     if (link.coordinate < 0) continue;
-    const S acceleration = (d.torque - d.inertia_axis.dot(d.acceleration)) / d.pivot;
+    const S acceleration = (d.torque - d.inertia_axis.dot(d.acceleration)) * (S(1) / d.pivot);
     qddot[link.coordinate] = acceleration;
     const Vector3<S> change = link.axis.cast<S>() * acceleration;
     if (link.kind == JointKind::revolute) d.acceleration.template head<3>() += change;
