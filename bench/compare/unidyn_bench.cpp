@@ -150,6 +150,8 @@ int rhs(const std::string& name, const std::map<std::string, std::string>& o) {
   if (o.count("--recursive-from")) {
     options.recursive_from_coordinates = std::stoul(o.at("--recursive-from"));
   }
+  // --native-flags: the compiler's flags for the native code instead of the default
+  if (o.count("--native-flags")) options.native_options.flags = o.at("--native-flags");
   const CompiledSystem compiled(model.system, options);
   const SimulationStart initial = initial_state(model.system, {});
   CompiledSystemData data = compiled.make_data();

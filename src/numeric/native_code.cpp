@@ -265,6 +265,35 @@ std::string seconds_text(double seconds) {
   return buffer;
 }
 
+// The x86-64 micro-architecture level of this processor as a compiler flag (GCC's and Clang's
+// -march=x86-64-v2, -v3, -v4), unless the flags name a target already. The code is the tape's
+// straight-line arithmetic, IEEE without contraction at any level, so the numbers are the same;
+// what changes is the encoding: with AVX-512's 32 vector registers (v4) the recorded
+// articulated-body algorithm of a 7-DoF arm (1 820 operations, most values live across several
+// joints) runs in 0.33 µs instead of 0.54 µs with SSE2's 16 (bench/, one machine). The level is
+// part of the flags, and so of the cache's key: a processor of another level (a cluster's other
+// nodes sharing a cache directory) compiles its own library rather than loading one it cannot run.
+std::string with_instruction_set(const std::string& flags) {
+  if (flags.find("-march=") != std::string::npos || flags.find("-mcpu=") != std::string::npos) {
+    return flags;
+  }
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+  __builtin_cpu_init();
+  const bool v2 = __builtin_cpu_supports("sse4.2") && __builtin_cpu_supports("popcnt") &&
+                  __builtin_cpu_supports("ssse3");
+  const bool v3 = v2 && __builtin_cpu_supports("avx") && __builtin_cpu_supports("avx2") &&
+                  __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2") &&
+                  __builtin_cpu_supports("fma") && __builtin_cpu_supports("f16c");
+  const bool v4 = v3 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+                  __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512dq") &&
+                  __builtin_cpu_supports("avx512vl");
+  if (v4) return flags + " -march=x86-64-v4";
+  if (v3) return flags + " -march=x86-64-v3";
+  if (v2) return flags + " -march=x86-64-v2";
+#endif
+  return flags;
+}
+
 }  // namespace
 
 std::shared_ptr<const NativeLibrary> NativeLibrary::build(
@@ -282,12 +311,13 @@ std::shared_ptr<const NativeLibrary> NativeLibrary::build(
   std::string compiler = options.compiler;
   if (compiler.empty()) compiler = environment_variable("CXX");
   if (compiler.empty()) compiler = "c++";
+  const std::string flags = with_instruction_set(options.flags);
   // The key: everything that determines the library — the source itself too, so that a library
   // is only ever the one this process would compile (another build of unidyn may order the same
   // equations' operations otherwise, and its numbers would differ from the tape's in their last
   // bits).
   const std::string key_text = "unidyn native code v3\nunidyn " UNIDYN_VERSION "\ncompiler " +
-                               compiler_identity(compiler) + "\nflags " + options.flags + "\n" +
+                               compiler_identity(compiler) + "\nflags " + flags + "\n" +
                                identity.signature + "source " + identity.source + "\nkey\n" +
                                (options.key.empty() ? body : options.key);
   identity.key = sha256_hex(key_text);
@@ -312,8 +342,8 @@ std::shared_ptr<const NativeLibrary> NativeLibrary::build(
     if (!location.persistent()) {
       // compiled and loaded from a private temporary directory, removed after loading
       library->kept_ = false;
-      const CacheEntry entry = private_entry(compile(
-          compiler, options.flags, source, location.directory(), library->compile_seconds_));
+      const CacheEntry entry = private_entry(
+          compile(compiler, flags, source, location.directory(), library->compile_seconds_));
       return accept(load_checked(entry, identity), entry);
     }
     const fs::path& directory = location.directory();
@@ -356,7 +386,7 @@ std::shared_ptr<const NativeLibrary> NativeLibrary::build(
     }
     const BuildDirectory build(directory);
     store_entry(directory, name,
-                compile(compiler, options.flags, source, build.path(), library->compile_seconds_));
+                compile(compiler, flags, source, build.path(), library->compile_seconds_));
     entry = inspect_entry(directory, name);
     if (entry.state != CacheEntry::State::intact) {
       throw NativeCodeError("native code: the library just stored is damaged: " + entry.why);

@@ -38,6 +38,8 @@ struct NativeOptions {
   std::string cache_directory;
   // -O1: the straight-line code of a tape runs as fast as at -O2 (measured: pendulum-5, -10, -20,
   // heavy top, bicycle) and compiles in half the time for the large ones (pendulum-20 3.9 → 2.9 s).
+  // On x86-64 the processor's micro-architecture level is added (-march=x86-64-v2, -v3 or -v4)
+  // unless the flags name a target (native_code.cpp: the same numbers, more registers).
   std::string flags = "-std=c++17 -O1 -ffp-contract=off -fno-fast-math -fPIC -shared";
   // What the cache is keyed by, besides the unidyn version, the compiler's identity (its resolved
   // path, size and time of change), the flags and the functions' names and sizes: empty takes the
