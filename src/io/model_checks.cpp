@@ -105,17 +105,16 @@ void ModelReader::expect_inertia_about_rotation_axes(const YAML::Node& node, std
 }
 
 void ModelReader::expect_every_coordinate_moves(const System& system) const {
+  // the symbols of every particle's position and every body's centre and rotation
+  SymbolsIn placed;
+  for (const auto& p : system.particles) placed.add(p.position);
+  for (const auto& body : system.bodies) {
+    placed.add(body.center);
+    placed.add(Expr(body.rotation));
+  }
   const auto& q = system.coordinates();
   for (std::size_t i = 0; i < q.size(); ++i) {
-    const auto moves = [&](const Expr& e) { return e.has(q[i].value); };
-    const auto moves_vector = [&](const VectorExpr& v) {
-      return moves(v[0]) || moves(v[1]) || moves(v[2]);
-    };
-    bool any = false;
-    for (const auto& p : system.particles) any = any || moves_vector(p.position);
-    for (const auto& body : system.bodies) {
-      any = any || moves_vector(body.center) || Expr(body.rotation).has(q[i].value);
-    }
+    const bool any = placed.has(q[i].value);
     if (!any) {
       throw ModelError(coordinate_at_[i],
                        "coordinate '" + q[i].name +

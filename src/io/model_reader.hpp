@@ -25,6 +25,7 @@
 #include "unidyn/symbolic/expression_parser.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
 #include "unidyn/symbolic/real_value.hpp"
+#include "unidyn/symbolic/symbols_in.hpp"
 
 namespace unidyn::model_reading {
 
@@ -180,12 +181,15 @@ class ModelReader {
   // accelerations (P.acceleration) or on a multiplier c.lambda: only outputs may.
   void expect_state_only(const YAML::Node& node, const Expr& e, const System& system,
                          const std::string& what, bool rates = false) const {
+    const SymbolsIn symbols(e);
     for (const auto& q : system.coordinates()) {
-      if (!rates && e.has(q.rate)) fail(node, what + " cannot depend on der(" + q.name + ")");
-      if (e.has(q.acceleration)) fail(node, what + " cannot depend on accelerations");
+      if (!rates && symbols.has(q.rate)) {
+        fail(node, what + " cannot depend on der(" + q.name + ")");
+      }
+      if (symbols.has(q.acceleration)) fail(node, what + " cannot depend on accelerations");
     }
     for (const auto& c : system.constraints) {
-      if (e.has(c.multiplier)) fail(node, what + " cannot depend on " + c.name + ".lambda");
+      if (symbols.has(c.multiplier)) fail(node, what + " cannot depend on " + c.name + ".lambda");
     }
   }
   // Refuses an expression of the coordinates, their rates or t: numbers and parameters only.

@@ -2,6 +2,7 @@
 #include "unidyn/symbolic/trig_identities.hpp"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <optional>
 #include <set>
@@ -30,22 +31,45 @@ bool is_cosine(const Expr& f) {
   return GiNaC::is_the_function<GiNaC::cos_SERIAL>(f);
 }
 
+// A term of the sum being combined: its canonical text (found when first asked for) and the
+// order it came in (two terms of one text, should GiNaC keep them apart, stay two).
+struct Term {
+  Expr term;
+  std::size_t arrival;
+  std::optional<std::string> text;
+
+  const std::string& canonical() {
+    if (!text) text = canonical_text(term);
+    return *text;
+  }
+};
+
 // One way to read a term as σ R f(A) g(B), R = |n| K with the term's number n and its other
 // factors K, f and g each the sine or the cosine of A and of B (A before B in the canonical order).
 struct Reading {
-  std::size_t term;
+  Term* term;
+  std::size_t order;  // among the term's readings
   bool sine_a, sine_b;
   int sign;
   Expr rest, a, b;
 };
-// What two readings must share to combine: the texts of R, A and B.
+// What two readings must share to combine: R, A and B.
+using Shared = std::array<Expr, 3>;
+struct SharedHash {
+  std::size_t operator()(const Shared& s) const {
+    return s[0].gethash() ^ (s[1].gethash() * 31) ^ (s[2].gethash() * 961);
+  }
+};
+struct SharedEqual {
+  bool operator()(const Shared& x, const Shared& y) const {
+    return x[0].is_equal(y[0]) && x[1].is_equal(y[1]) && x[2].is_equal(y[2]);
+  }
+};
+// Their texts: the order in which pairs are taken.
 using ReadingKey = std::tuple<std::string, std::string, std::string>;
-// The readings grouped by that key.
-using Readings = std::map<ReadingKey, std::vector<Reading>>;
 
-// A term's readings (its index in the sum left to be set).
-std::vector<std::pair<ReadingKey, Reading>> term_readings(const Expr& term) {
-  std::vector<std::pair<ReadingKey, Reading>> readings;
+// The term's number and its other factors.
+std::pair<GiNaC::numeric, std::vector<Expr>> number_and_factors(const Expr& term) {
   GiNaC::numeric number = 1;
   std::vector<Expr> factors;
   for (std::size_t i = 0; i < (is_exactly_a<GiNaC::mul>(term) ? term.nops() : 1); ++i) {
@@ -56,50 +80,7 @@ std::vector<std::pair<ReadingKey, Reading>> term_readings(const Expr& term) {
       factors.push_back(f);
     }
   }
-  for (std::size_t i = 0; i < factors.size(); ++i) {
-    for (std::size_t j = 0; j < factors.size(); ++j) {
-      const Expr &f = factors[i], &g = factors[j];
-      if (i == j || !(is_sine(f) || is_cosine(f)) || !(is_sine(g) || is_cosine(g))) continue;
-      if (!canonical_less(f.op(0), g.op(0))) continue;
-      Expr rest = GiNaC::abs(number);
-      for (std::size_t k = 0; k < factors.size(); ++k) {
-        if (k != i && k != j) rest *= factors[k];
-      }
-      readings.emplace_back(
-          ReadingKey{canonical_text(rest), canonical_text(f.op(0)), canonical_text(g.op(0))},
-          Reading{0, is_sine(f), is_sine(g), number.is_negative() ? -1 : 1, rest, f.op(0),
-                  g.op(0)});
-    }
-  }
-  return readings;
-}
-
-// Each term of a sum that is being combined pair by pair: its canonical text and its readings,
-// found once (the sum keeps all its terms but two from one step to the next).
-class TermCache {
- public:
-  struct Entry {
-    std::string text;
-    std::vector<std::pair<ReadingKey, Reading>> readings;
-  };
-  const Entry& operator()(const Expr& term) {
-    if (const auto found = entries_.find(term); found != entries_.end()) return found->second;
-    return entries_.emplace(term, Entry{canonical_text(term), term_readings(term)}).first->second;
-  }
-
- private:
-  std::unordered_map<Expr, Entry, ExprHash, GiNaC::ex_is_equal> entries_;
-};
-
-Readings readings_of(const std::vector<Expr>& terms, TermCache& cache) {
-  Readings readings;
-  for (std::size_t t = 0; t < terms.size(); ++t) {
-    for (const auto& [key, reading] : cache(terms[t]).readings) {
-      readings[key].push_back(reading);
-      readings[key].back().term = t;
-    }
-  }
-  return readings;
+  return {number, factors};
 }
 
 // Whether x reads better negated: −b, or a sum whose first term in the canonical order is
@@ -123,33 +104,19 @@ Expr sine(const Expr& x) {
   return reads_negated(x) ? -sine_of(-x) : sine_of(x);
 }
 
-// Two readings that combine into one term, or none:
+// Whether two readings (of one key) combine into one term:
 //   σ1 R cos A cos B + σ2 R sin A sin B = σ1 R cos(A − B) (σ1 = σ2) or σ1 R cos(A + B)
 //   σ1 R sin A cos B + σ2 R cos A sin B = σ1 R sin(A + B) (σ1 = σ2) or σ1 R sin(A − B)
-std::optional<Expr> combined(const Reading& r1, const Reading& r2) {
-  const bool same = r1.sign == r2.sign;
-  const Expr sum = r1.a + r1.b, difference = r1.a - r1.b;
-  if (!r1.sine_a && !r1.sine_b && r2.sine_a && r2.sine_b) {
-    return r1.sign * r1.rest * cosine(same ? difference : sum);
-  }
-  if (r1.sine_a && !r1.sine_b && !r2.sine_a && r2.sine_b) {
-    return r1.sign * r1.rest * sine(same ? sum : difference);
-  }
-  return std::nullopt;
+bool combine(const Reading& r1, const Reading& r2) {
+  if (r1.term == r2.term) return false;
+  return (!r1.sine_a && !r1.sine_b && r2.sine_a && r2.sine_b) ||
+         (r1.sine_a && !r1.sine_b && !r2.sine_a && r2.sine_b);
 }
-
-// The first pair of terms that combine, in the order of the readings' keys: (first term, second
-// term, the combined term).
-std::optional<std::tuple<std::size_t, std::size_t, Expr>> first_pair(const Readings& readings) {
-  for (const auto& [key, list] : readings) {
-    for (const Reading& r1 : list) {
-      for (const Reading& r2 : list) {
-        if (r1.term == r2.term) continue;
-        if (const auto c = combined(r1, r2)) return std::make_tuple(r1.term, r2.term, *c);
-      }
-    }
-  }
-  return std::nullopt;
+// The term they combine into.
+Expr combined(const Reading& r1, const Reading& r2) {
+  const bool same = r1.sign == r2.sign;
+  if (!r1.sine_a) return r1.sign * r1.rest * cosine(same ? r1.a - r1.b : r1.a + r1.b);
+  return r1.sign * r1.rest * sine(same ? r1.a + r1.b : r1.a - r1.b);
 }
 
 std::vector<Expr> terms_of(const Expr& e) {
@@ -197,6 +164,144 @@ std::optional<std::pair<Expr, Expr>> split_trig_monomial(const Expr& term) {
   }
   return std::make_pair(monomial, rest);
 }
+
+// An expanded sum combined pair by pair. Each term's readings are found once, when it enters,
+// and grouped by what they share; the groups holding a pair that combines are kept in the order
+// of their texts: the next pair is the first pair of the first such group (its readings in the
+// order of their terms' texts), as a search of the whole sum in the canonical order would find it.
+// Texts are made only for those groups and their terms (most groups hold one reading).
+class AngleSums {
+ public:
+  explicit AngleSums(const Expr& x) : x_(x) {
+    for (const Expr& t : terms_of(x_)) enter(t);
+  }
+  const Expr& sum() const { return x_; }
+  std::size_t size() const { return terms_.size(); }
+
+  // Combines the first pair; false when none is left.
+  bool step() {
+    if (combining_.empty()) return false;
+    std::vector<Reading> group = groups_.at(combining_.begin()->second).readings;
+    std::sort(group.begin(), group.end(), [](const Reading& r1, const Reading& r2) {
+      return std::forward_as_tuple(r1.term->canonical(), r1.term->arrival, r1.order) <
+             std::forward_as_tuple(r2.term->canonical(), r2.term->arrival, r2.order);
+    });
+    for (const Reading& r1 : group) {
+      for (const Reading& r2 : group) {
+        if (combine(r1, r2)) return replace(r1.term->term, r2.term->term, combined(r1, r2));
+      }
+    }
+    return false;  // (a group is kept apart only with a pair)
+  }
+
+ private:
+  struct Group {
+    std::vector<Reading> readings;
+    std::optional<std::pair<ReadingKey, std::size_t>> key;  // texts, then the group's arrival
+  };
+  // a term and what its readings share
+  struct Entry {
+    Term term;
+    std::vector<Shared> shared;
+  };
+
+  // The sum with t1 and t2 replaced by c; the terms that left and came in updated (GiNaC adds c
+  // to a term of its kind, if any: then the terms are compared).
+  bool replace(Expr t1, Expr t2, const Expr& c) {
+    std::vector<Expr> sum{c};
+    for (const auto& [t, entry] : terms_) {
+      if (!t.is_equal(t1) && !t.is_equal(t2)) sum.push_back(t);
+    }
+    x_ = sum_of(sum);
+    if (is_exactly_a<GiNaC::add>(x_) && x_.nops() + 1 == terms_.size()) {
+      leave(t1);
+      leave(t2);
+      enter(c);
+      return true;
+    }
+    const std::vector<Expr> now = terms_of(x_);
+    const std::unordered_set<Expr, ExprHash, GiNaC::ex_is_equal> kept(now.begin(), now.end());
+    std::vector<Expr> left;
+    for (const auto& [t, entry] : terms_) {
+      if (kept.count(t) == 0) left.push_back(t);
+    }
+    for (const Expr& t : left) leave(t);
+    for (const Expr& t : now) {
+      if (terms_.count(t) == 0) enter(t);
+    }
+    return true;
+  }
+
+  void enter(const Expr& t) {
+    Entry& entry = terms_.emplace(t, Entry{Term{t, arrivals_++, std::nullopt}, {}}).first->second;
+    const auto [number, factors] = number_and_factors(t);
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+      for (std::size_t j = 0; j < factors.size(); ++j) {
+        const Expr &f = factors[i], &g = factors[j];
+        if (i == j || !(is_sine(f) || is_cosine(f)) || !(is_sine(g) || is_cosine(g))) continue;
+        if (!(argument_text(f.op(0)) < argument_text(g.op(0)))) continue;
+        Expr rest = GiNaC::abs(number);
+        for (std::size_t k = 0; k < factors.size(); ++k) {
+          if (k != i && k != j) rest *= factors[k];
+        }
+        const Shared shared{rest, f.op(0), g.op(0)};
+        groups_[shared].readings.push_back(Reading{&entry.term, entry.shared.size(), is_sine(f),
+                                                   is_sine(g), number.is_negative() ? -1 : 1, rest,
+                                                   f.op(0), g.op(0)});
+        entry.shared.push_back(shared);
+        review(shared);
+      }
+    }
+  }
+
+  void leave(const Expr& t) {
+    const Entry& entry = terms_.at(t);
+    for (const Shared& shared : entry.shared) {
+      const auto group = groups_.find(shared);
+      if (group == groups_.end()) continue;  // (left with an earlier reading of the term)
+      std::vector<Reading>& readings = group->second.readings;
+      readings.erase(std::remove_if(readings.begin(), readings.end(),
+                                    [&](const Reading& r) { return r.term == &entry.term; }),
+                     readings.end());
+      review(shared);
+    }
+    terms_.erase(t);
+  }
+
+  // Whether the group still holds a pair that combines; an empty group goes.
+  void review(const Shared& shared) {
+    const auto found = groups_.find(shared);
+    Group& group = found->second;
+    const auto& rs = group.readings;
+    const bool pair = std::any_of(rs.begin(), rs.end(), [&](const Reading& r1) {
+      return std::any_of(rs.begin(), rs.end(), [&](const Reading& r2) { return combine(r1, r2); });
+    });
+    if (pair && !group.key) {
+      group.key.emplace(
+          ReadingKey{canonical_text(shared[0]), argument_text(shared[1]), argument_text(shared[2])},
+          group_arrivals_++);
+      combining_.emplace(*group.key, shared);
+    } else if (!pair && group.key) {
+      combining_.erase(*group.key);
+      group.key.reset();
+    }
+    if (rs.empty()) groups_.erase(found);
+  }
+
+  // The canonical text of a sine's or cosine's argument (few, met often).
+  const std::string& argument_text(const Expr& x) {
+    const auto found = argument_texts_.find(x);
+    if (found != argument_texts_.end()) return found->second;
+    return argument_texts_.emplace(x, canonical_text(x)).first->second;
+  }
+
+  Expr x_;
+  std::size_t arrivals_ = 0, group_arrivals_ = 0;
+  std::unordered_map<Expr, Entry, ExprHash, GiNaC::ex_is_equal> terms_;
+  std::unordered_map<Shared, Group, SharedHash, SharedEqual> groups_;
+  std::map<std::pair<ReadingKey, std::size_t>, Shared> combining_;
+  std::unordered_map<Expr, std::string, ExprHash, GiNaC::ex_is_equal> argument_texts_;
+};
 
 }  // namespace
 
@@ -246,26 +351,12 @@ std::vector<Expr> trig_arguments(const Expr& e) {
 }
 
 Expr combine_angle_sums(const Expr& e) {
-  Expr x = expand_within_budget(e, "simplifying");
-  TermCache cache;
-  for (;;) {
-    // the terms in the canonical order, so that the pair taken never depends on GiNaC's
-    std::vector<std::pair<std::string, Expr>> keyed;
-    for (const Expr& t : terms_of(x)) keyed.emplace_back(cache(t).text, t);
-    std::stable_sort(keyed.begin(), keyed.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<Expr> terms;
-    for (const auto& [text, t] : keyed) terms.push_back(t);
-    if (terms.size() < 2 || terms.size() > kMaxCombinedTerms) return x;
-    const auto pair = first_pair(readings_of(terms, cache));
-    if (!pair) return x;
-    const auto& [first, second, term] = *pair;
-    std::vector<Expr> sum{term};
-    for (std::size_t t = 0; t < terms.size(); ++t) {
-      if (t != first && t != second) sum.push_back(terms[t]);
-    }
-    x = sum_of(sum);
+  const Expr x = expand_within_budget(e, "simplifying");
+  if (!is_exactly_a<GiNaC::add>(x) || x.nops() > kMaxCombinedTerms) return x;
+  AngleSums sums(x);
+  while (sums.size() >= 2 && sums.step()) {
   }
+  return sums.sum();
 }
 
 namespace {
