@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
-"""Side-by-side benchmarks of unidyn against SymPy mechanics, MuJoCo and Simbody.
+"""Side-by-side benchmarks of unidyn against SymPy mechanics, MuJoCo, Simbody and DART.
 
 Usage: python3 bench/run.py BUILD_DIR [--quick]
 
 BUILD_DIR holds the built benchmark programs (bench/unidyn_bench, bench/peers/peer_mujoco,
-bench/peers/peer_simbody). Every figure below is measured in this one run; the tables go to
+bench/peers/peer_simbody, bench/peers/peer_dart). Every figure below is measured in this one run; the tables go to
 standard output and to bench/RESULTS.md. --quick shrinks the sweeps and the models (a smoke test
 of every part, about a minute; CI runs it) and leaves bench/RESULTS.md alone. A part that fails is reported and the run goes on; the exit
 status is then 1.
@@ -154,6 +154,7 @@ class Bench:
         self.unidyn = os.path.join(self.build, "bench", "unidyn_bench")
         self.mujoco = os.path.join(self.build, "bench", "peers", "peer_mujoco")
         self.simbody = os.path.join(self.build, "bench", "peers", "peer_simbody")
+        self.dart = os.path.join(self.build, "bench", "peers", "peer_dart")
         self.sympy = [sys.executable, os.path.join(HERE, "sympy", "derive.py")]
         self.lines = []
 
@@ -607,7 +608,7 @@ print(json.dumps({{"loop": looped, "sweep": time.perf_counter() - start}}))
 
     # 10. Robots from files ----------------------------------------------------------------------
     def robots(self):
-        self.say("## 10. Robots from URDF and MJCF files: the same file in unidyn and MuJoCo\n")
+        self.say("## 10. Robots from URDF and MJCF files: the same file in unidyn, MuJoCo and DART\n")
         self.say("Each file is read by both (unidyn imports it as tree joints; MuJoCo by "
                  "mj_loadXML, contacts off): derive and compile (unidyn: Kane's equations, the "
                  "tape, then native code with an empty cache), the whole `unidyn simulate` "
@@ -615,8 +616,9 @@ print(json.dumps({{"loop": looped, "sweep": time.perf_counter() - start}}))
                  "equations are derived: the articulated-body algorithm), one right-hand side at "
                  "a random state (unidyn: the compiled equations below 5 coordinates, from 5 the "
                  "articulated-body algorithm over the tree recorded as generated code at the "
-                 "model's numbers; MuJoCo: mj_forward), and "
-                 "the largest relative difference of q̈ at 3 states (a free joint's through "
+                 "model's numbers; MuJoCo: mj_forward; DART 6.12, URDF files only, by its own "
+                 "URDF loader: setPositions, setVelocities, computeForwardDynamics), and "
+                 "the largest relative difference of q̈ from either engine at 3 states (a free joint's through "
                  "MuJoCo's velocities: ω on the body frame). The n-link chains are URDF "
                  "files written here (links of 1 kg and 1 m about y); the floating quadruped (19 "
                  "coordinates) and humanoid (36) are tests/formats/models. Goals of issue 38: the "
@@ -624,8 +626,8 @@ print(json.dumps({{"loop": looped, "sweep": time.perf_counter() - start}}))
                  "at n = 20 and 50, derive + compile of the arm ≤ 1 s, first right-hand side of "
                  "the 50-chain ≤ 0.3 s.\n")
         self.say("| file | n | derive | tape | native code | simulate, whole process | unidyn "
-                 "| MuJoCo | MuJoCo / unidyn | max difference |")
-        self.say("|---|---|---|---|---|---|---|---|---|---|")
+                 "| MuJoCo | MuJoCo / unidyn | DART | DART / unidyn | max difference |")
+        self.say("|---|---|---|---|---|---|---|---|---|---|---|---|")
         with tempfile.TemporaryDirectory() as scratch:
             formats = os.path.join(ROOT, "tests", "formats", "models")
             files = [os.path.join(formats, "iiwa-like-arm.urdf"),
@@ -646,11 +648,15 @@ print(json.dumps({{"loop": looped, "sweep": time.perf_counter() - start}}))
                 states = [random_robot_state(self.rng, sizes) for _ in range(3)]
                 text = write_states(states)
                 ours, ns = rhs_output(run([self.unidyn, "rhs", path], text))
-                cells = ["not built", "", ""]
-                if self.have(self.mujoco):
-                    theirs, ns_mujoco = rhs_output(run([self.mujoco, "rhs", path], text))
-                    cells = [f"{ns_mujoco:.0f} ns", f"{ns_mujoco / ns:.1f}×",
-                             f"{max_relative_difference(ours, theirs):.1e}"]
+                cells, difference = [], 0.0
+                for peer, takes in ((self.mujoco, True), (self.dart, path.endswith(".urdf"))):
+                    if not takes or not self.have(peer):
+                        cells += ["–" if not takes else "not built", ""]
+                        continue
+                    theirs, ns_peer = rhs_output(run([peer, "rhs", path], text))
+                    cells += [f"{ns_peer:.0f} ns", f"{ns_peer / ns:.1f}×"]
+                    difference = max(difference, max_relative_difference(ours, theirs))
+                cells.append(f"{difference:.1e}")
                 # the whole `simulate` process to its first row, the native-code cache empty
                 cache = tempfile.mkdtemp(dir=scratch)
                 start = time.perf_counter()

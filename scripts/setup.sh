@@ -21,7 +21,7 @@ run=(
 # tests and micro benchmarks, the peers of bench/ (compiled with them), pdflatex for the LaTeX
 # documents `derive --standalone` writes, and SymPy to read the JSON `derive` writes
 test=(googletest libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev libsimbody-dev
-  liborocos-kdl-dev
+  liborocos-kdl-dev libdart-utils-urdf-dev
   texlive-latex-base python3 python3-sympy chromium
   pybind11-dev python3-dev python3-numpy python3-pytest python3-pandas python3-distributed)
 # Node.js and npm: Debian's, unless the machine has them already (a newer Node.js, say)

@@ -42,6 +42,16 @@ TEST(TrigIdentities, AngleSumsAndDifferences) {
       {cos(a) * cos(b) + m * sin(a) * sin(b), cos(a) * cos(b) + m * sin(a) * sin(b)},
       // the double pendulum with relative angles: sin(a + b) sin a + cos a cos(a + b) = cos b
       {sin(a + b) * sin(a) + cos(a) * cos(a + b), cos(b)},
+      // the combined term joins a term of its kind, or cancels it
+      {K * cos(a) * cos(b) + K * sin(a) * sin(b) + K * cos(a - b), 2 * K * cos(a - b)},
+      {K * cos(a) * cos(b) + K * sin(a) * sin(b) + K * cos(a - b) + m * cos(a) * cos(b) +
+           m * sin(a) * sin(b),
+       2 * K * cos(a - b) + m * cos(a - b)},
+      {K * cos(a) * cos(b) + K * sin(a) * sin(b) - K * cos(a - b) + m, m},
+      // three angles: a combined term combines again (a rotation's entry)
+      {cos(a) * cos(b) * cos(m) - sin(a) * sin(b) * cos(m) - sin(a) * cos(b) * sin(m) -
+           cos(a) * sin(b) * sin(m),
+       cos(a + b + m)},
   };
   for (const auto& c : cases) {
     const Expr combined = combine_angle_sums(c.in);
