@@ -609,7 +609,7 @@ print(json.dumps({{"loop": looped, "sweep": time.perf_counter() - start}}))
     # 10. Robots from files ----------------------------------------------------------------------
     def robots(self):
         self.say("## 10. Robots from URDF and MJCF files: the same file in unidyn, MuJoCo and DART\n")
-        self.say("Each file is read by both (unidyn imports it as tree joints; MuJoCo by "
+        self.say("Each file is read by each engine (unidyn imports it as tree joints; MuJoCo by "
                  "mj_loadXML, contacts off): derive and compile (unidyn: Kane's equations, the "
                  "tape, then native code with an empty cache), the whole `unidyn simulate` "
                  "process to its first row (with an empty cache; from 5 coordinates no "
