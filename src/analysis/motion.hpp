@@ -21,7 +21,8 @@ struct MotionSolution {
   std::size_t steps = 0;      // accepted
 };
 
-// F at each evaluation of the right-hand side (at t, on or near the motion).
+// F along the motion: with Φ, at each evaluation of the right-hand side (at t, on or near the
+// motion); without, at the end of each step (on it: 12 times fewer than DOP853's stages).
 using MotionVisitor = std::function<void(double t, const Eigen::MatrixXd& F)>;
 
 // The motion from point over `duration`, Φ of `states` states (0: none). Throws IntegrationError,
