@@ -99,7 +99,7 @@ Linearization linearize(const System& system, const CompiledSystem& compiled,
   expect_kept_at_rest(at, point, out, names);
   const double acceleration_tolerance = expect_balanced(at, point, names);
   expect_the_same_at_other_instants(compiled, point, at, out.kept, acceleration_tolerance, names);
-  expect_steady_along_the_motion(compiled, point, at, out.kept, names);
+  expect_steady_along_the_motion(compiled, point, at, out.kept, out.dropped, names);
   expect_contacts_push(system, point, m);
 
   // M, C and K in all coordinates; without constraints, the equations themselves.

@@ -54,12 +54,39 @@ void expect_the_same_at_other_instants(const CompiledSystem& compiled, const Ope
   }
 }
 
+namespace {
+
+// Whether only ignorable coordinates move: each rate beyond rounding (relative to the fastest) is
+// an independent coordinate's, dropped as ignorable.
+bool only_ignorable_coordinates_move(const ReducedSystem& at, const OperatingPoint& point,
+                                     const std::vector<Index>& dropped) {
+  const double rate_tolerance = kNegligible * (1.0 + largest(point.qdot));
+  std::vector<bool> ignorable(static_cast<std::size_t>(point.qdot.size()), false);
+  for (const Index k : dropped) {
+    if (k < at.P_q.cols()) {
+      ignorable[static_cast<std::size_t>(at.choice.independent_q[static_cast<std::size_t>(k)])] =
+          true;
+    }
+  }
+  for (Index i = 0; i < point.qdot.size(); ++i) {
+    if (std::abs(point.qdot[i]) > rate_tolerance && !ignorable[static_cast<std::size_t>(i)]) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 void expect_steady_along_the_motion(const CompiledSystem& compiled, const OperatingPoint& point,
                                     const ReducedSystem& at, const std::vector<Index>& kept,
+                                    const std::vector<Index>& dropped,
                                     const std::vector<std::string>& names) {
   Index fastest = 0;
   const double rate = point.qdot.size() == 0 ? 0.0 : point.qdot.cwiseAbs().maxCoeff(&fastest);
   if (rate == 0.0) return;  // nothing moves
+  // a rolling bicycle's wheel angles and position: F does not depend on them
+  if (only_ignorable_coordinates_move(at, point, dropped)) return;
   const MatrixXd F0 = at.F(kept, kept);
   const double scale = std::max(largest(F0), 1e-300);
   double change = 0.0, when = point.t;

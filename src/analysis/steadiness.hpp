@@ -23,12 +23,15 @@ void expect_the_same_at_other_instants(const CompiledSystem& compiled, const Ope
                                        double acceleration_tolerance,
                                        const std::vector<std::string>& names);
 
-// When something moves at the point: the motion followed for the time its fastest coordinate takes
-// to move by 1 (a radian, a metre), and F along it compared with F at the point (to 1e-6 of its
-// largest entry: the integration's error is far below, a moving crank's change far above), over
-// the kept states. Throws NotAnOperatingPoint when it changes.
+// When something moves at the point other than the ignorable coordinates (`dropped` states, on
+// which F does not depend: moving them changes nothing the linearisation sees — the kept ones are
+// at rest, checked before): the motion followed for the time its fastest coordinate takes to move
+// by 1 (a radian, a metre), and F along it compared with F at the point (to 1e-6 of its largest
+// entry: the integration's error is far below, a moving crank's change far above), over the kept
+// states. Throws NotAnOperatingPoint when it changes.
 void expect_steady_along_the_motion(const CompiledSystem& compiled, const OperatingPoint& point,
                                     const ReducedSystem& at, const std::vector<Eigen::Index>& kept,
+                                    const std::vector<Eigen::Index>& dropped,
                                     const std::vector<std::string>& names);
 
 }  // namespace unidyn::detail
