@@ -300,7 +300,7 @@ std::shared_ptr<const NativeLibrary> NativeLibrary::build(
     const std::vector<std::pair<std::string, const Tape*>>& functions,
     const NativeOptions& options) {
   // The functions' source, their signature, and the compiler.
-  std::string body = "#include <cmath>\n";
+  std::string body;  // (no header: the functions are the compiler's builtins)
   Identity identity;
   for (const auto& [name, tape] : functions) {
     body += "\n" + tape_source(*tape, name);

@@ -26,11 +26,11 @@ template <class Register>
 void write_instruction(std::ostream& os, const TapeInstruction& i, const Register& reg) {
   const std::string x = reg(i.a), y = reg(i.b);
   if (i.op == TapeOp::sincos) {
-    os << "  { const double x = " << x << "; " << reg(i.dst) << " = std::sin(x); " << y
-       << " = std::cos(x); }\n";
+    os << "  { const double x = " << x << "; " << reg(i.dst) << " = __builtin_sin(x); " << y
+       << " = __builtin_cos(x); }\n";
   } else {
     os << "  " << reg(i.dst) << " = "
-       << detail::tape_operation(i.op, x, y, detail::TapeLanguage::cpp) << ";\n";
+       << detail::tape_operation(i.op, x, y, detail::TapeLanguage::native) << ";\n";
   }
 }
 

@@ -1,4 +1,4 @@
-// Tape operations printed in C++, C, Python and MATLAB.
+// Tape operations printed in C, Python and MATLAB, and for the native code.
 #include "tape_language.hpp"
 
 namespace unidyn::detail {
@@ -30,8 +30,8 @@ std::string step_of(const std::string& x, TapeLanguage language) {
 
 std::string tape_function(const char* name, TapeLanguage language) {
   switch (language) {
-    case TapeLanguage::cpp:
-      return std::string("std::") + name;
+    case TapeLanguage::native:
+      return std::string("__builtin_") + name;
     case TapeLanguage::python:
       return std::string("math.") + name;
     default:
