@@ -57,21 +57,6 @@ const char* op_name(TapeOp op) {
   return names[static_cast<std::size_t>(op)];
 }
 
-// Whether an operation takes two operands.
-bool is_binary(TapeOp op) {
-  switch (op) {
-    case TapeOp::add:
-    case TapeOp::sub:
-    case TapeOp::mul:
-    case TapeOp::div:
-    case TapeOp::pow:
-    case TapeOp::atan2:
-      return true;
-    default:
-      return false;
-  }
-}
-
 // The printed form of an expression, for error messages.
 std::string str(const ex& e) {
   std::ostringstream os;
@@ -567,7 +552,7 @@ std::string Tape::listing() const {
     os << "  r" << i.dst;
     if (i.op == TapeOp::sincos) os << ", r" << i.b;
     os << " = " << op_name(i.op) << " r" << i.a;
-    if (is_binary(i.op)) os << ", r" << i.b;
+    if (detail::is_binary(i.op)) os << ", r" << i.b;
     os << '\n';
   }
   for (std::size_t k = 0; k < output_count(); ++k)

@@ -15,6 +15,21 @@ namespace unidyn::detail {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
+// Whether an operation reads two operands (sincos writes its b; the others read a only).
+inline bool is_binary(TapeOp op) {
+  switch (op) {
+    case TapeOp::add:
+    case TapeOp::sub:
+    case TapeOp::mul:
+    case TapeOp::div:
+    case TapeOp::pow:
+    case TapeOp::atan2:
+      return true;
+    default:
+      return false;
+  }
+}
+
 // A value during compilation: an input, a constant or a virtual (single-assignment) temporary.
 struct Value {
   enum class Kind : std::uint8_t { input, constant, temp };

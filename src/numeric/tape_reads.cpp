@@ -1,25 +1,9 @@
 // Which inputs a tape's outputs depend on (backward liveness over its instructions).
 #include "unidyn/numeric/tape_reads.hpp"
 
+#include "tape_program.hpp"
+
 namespace unidyn {
-namespace {
-
-// Whether the operation reads its b register (sincos writes it; unary operations ignore it).
-bool reads_b(TapeOp op) {
-  switch (op) {
-    case TapeOp::add:
-    case TapeOp::sub:
-    case TapeOp::mul:
-    case TapeOp::div:
-    case TapeOp::pow:
-    case TapeOp::atan2:
-      return true;
-    default:
-      return false;
-  }
-}
-
-}  // namespace
 
 std::vector<bool> inputs_read(const Tape& tape) {
   std::vector<bool> live(tape.register_count(), false);
@@ -32,7 +16,7 @@ std::vector<bool> inputs_read(const Tape& tape) {
     live[ins.dst] = false;
     if (second) live[ins.b] = false;
     live[ins.a] = true;
-    if (reads_b(ins.op)) live[ins.b] = true;
+    if (detail::is_binary(ins.op)) live[ins.b] = true;
   }
   live.resize(tape.input_count());
   return live;

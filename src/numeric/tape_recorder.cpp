@@ -37,8 +37,7 @@ double computed(TapeOp op, double x, double y) {
 }
 
 bool is_unary(TapeOp op) {
-  return !(op == TapeOp::add || op == TapeOp::sub || op == TapeOp::mul || op == TapeOp::div ||
-           op == TapeOp::pow || op == TapeOp::atan2);
+  return !detail::is_binary(op);
 }
 
 }  // namespace

@@ -86,7 +86,6 @@ class TapeRecorder {
   // Keep x for the caller to check: watched values are the tape's last outputs, in order. A
   // constant is kept as it is.
   void watch(const Recorded& x) { watched_.push_back(x); }
-  std::size_t watched() const { return watched_.size(); }
 
   // The tape of `outputs`, then the watched values.
   Tape finish(const std::vector<Recorded>& outputs) const;
