@@ -180,7 +180,7 @@ Dynamics kdl_dynamics(const KdlTree& kdl, const Eigen::VectorXd& q, const Eigen:
 
 // The URDF file in unidyn and in KDL at 20 random states (engine_oracle::expect_agreement): angles
 // within ±2 rad, slides within ±0.5 m, rates within ±2.
-void expect_agreement_with_kdl(const std::string& file, Paths paths = Paths::both) {
+inline void expect_agreement_with_kdl(const std::string& file, Paths paths = Paths::both) {
   const KdlTree kdl = read_kdl_tree(engine_oracle::formats_model(file));
   const engine_oracle::LoadedFile unidyn = engine_oracle::load_and_compile(file, paths);
   const auto& coordinates = unidyn.loaded.system.coordinates();
