@@ -6,6 +6,7 @@
     run = top.simulate(t_end=5, set={"m": 2})
     run["theta"], run.t                       # numpy arrays, one per column
     run.to_pandas()                           # a DataFrame, when pandas is installed
+    run.plot()                                # its columns against t (matplotlib)
     qdd, lam = top.rhs(q, qd)                 # one state, or an array of states (one per row)
     top.modes(at={"theta": 0.3, "der(psi)": 60})
 
@@ -18,9 +19,12 @@ thread-safe), and `rhs` batches run in parallel: use processes for parallel runs
 
 import functools
 import json
+import os
+import tempfile
 
 import numpy as np
 
+from . import display
 from ._unidyn import ModelError
 from ._unidyn import Model as _Model
 
@@ -71,6 +75,11 @@ class Result:
 
         return pandas.DataFrame(self.data, columns=self.columns)
 
+    def plot(self, columns=None, ax=None):
+        """Its columns against t with matplotlib: all of them unless `columns` names some; on
+        `ax`, or on a new figure. Returns the axes."""
+        return display.plot(self, columns, ax)
+
 
 class Model:
     """A model: parameters, coordinates, constraints; its equations compiled once on first use
@@ -99,10 +108,20 @@ class Model:
     def __repr__(self):
         return f"<unidyn.Model {self.name!r}: {len(self.coordinates)} coordinates>"
 
+    def _repr_html_(self):
+        return display.model_html(self.name, self.coordinates, self.parameters, self.constraints)
+
     def derive(self, method="lagrange", format="text", form="textbook"):
         """`unidyn derive`: method lagrange | kane | newton-euler | second-form; format text |
-        latex | json | c | python | matlab; form textbook | zees | matrix."""
-        return self._model.derive(method, format, form)
+        latex | json | c | python | matlab; form textbook | zees | matrix. The text as the
+        command prints it; in text or LaTeX, a str that shows in a notebook as the book's LaTeX."""
+        text = self._model.derive(method, format, form)
+        if format == "text":
+            latex = functools.partial(Model.derive, self, method, "latex", form)
+            return display.Equations(text, latex)
+        if format == "latex":
+            return display.Equations(text, functools.partial(str, text))
+        return text
 
     def simulate(self, t_end=None, output_step=None, method=None, rtol=None, set=None,
                  poses=False):
@@ -121,23 +140,32 @@ class Model:
         """`unidyn linearize --format json`, as a dict. A driven system's point (equations that
         depend on t periodically, or period=T given) is a periodic motion: the dict has its
         "period", "A_at_t0" and "monodromy" in place of "A"."""
-        return json.loads(self._model._analysis("linearize", _points(at), _settings(set), 0, [],
-                                                _period(period)))
+        return display.Analysis(json.loads(self._model._analysis(
+            "linearize", _points(at), _settings(set), 0, [], _period(period))))
 
     def modes(self, at, set=None, period=None):
         """`unidyn modes --format json`, as a dict (eigenvalues, shapes, stability); for a
         periodic motion the Floquet "multipliers" (re, im, modulus, exponent_re, exponent_im)."""
-        return json.loads(self._model._analysis("modes", _points(at), _settings(set), 0, [],
-                                                _period(period)))
+        return display.Analysis(json.loads(self._model._analysis(
+            "modes", _points(at), _settings(set), 0, [], _period(period))))
 
     def equilibria(self, at=None, set=None, starts=200, cyclic=()):
         """`unidyn equilibria --format json`, as a dict."""
         return json.loads(self._model._analysis("equilibria", _points(at), _settings(set),
                                                 int(starts), list(cyclic)))
 
-    def report(self, path, t_end=None, output_step=None, method=None, rtol=None, set=None):
-        """`unidyn report -o PATH`: the HTML page; returns the line the command prints."""
-        return self._model._report(str(path), t_end, output_step, method, rtol, _settings(set))
+    def report(self, path=None, t_end=None, output_step=None, method=None, rtol=None, set=None):
+        """`unidyn report`: the offline HTML page, written to `path` when one is given (`-o
+        PATH`). Returns the line the command prints, a str carrying the page (`.page`,
+        `.save(path)`) that shows it inline in a notebook."""
+        with tempfile.TemporaryDirectory() as scratch:
+            target = os.path.join(scratch, "report.html") if path is None else str(path)
+            line = self._model._report(target, t_end, output_step, method, rtol, _settings(set))
+            with open(target, encoding="utf-8") as page:
+                text = page.read()
+        if path is None:
+            line = line.replace(f"written to {target}", "made (not saved: .save(path) writes it)")
+        return display.Report(line, text)
 
 
 def _period(period):
