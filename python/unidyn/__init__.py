@@ -24,7 +24,12 @@ import tempfile
 
 import numpy as np
 
-from . import display
+# a package installed by `pip install .` carries the bundled models beside it (setup.py)
+_MODELS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "share", "unidyn", "models")
+if "UNIDYN_MODELS" not in os.environ and os.path.isdir(_MODELS):
+    os.environ["UNIDYN_MODELS"] = _MODELS
+
+from . import display  # noqa: E402 (after the models' place is known)
 from ._unidyn import ModelError
 from ._unidyn import Model as _Model
 
