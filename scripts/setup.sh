@@ -20,12 +20,13 @@ run=(
 )
 # tests and micro benchmarks, the peers of bench/ (compiled with them), pdflatex for the LaTeX
 # documents `derive --standalone` writes, SymPy to read the JSON `derive` writes, and matplotlib,
-# nbclient and ipykernel for the Python module's plots and the example notebooks run as tests
+# nbclient and ipykernel for the Python module's plots and the example notebooks run as tests,
+# PyYAML for models built as dicts
 test=(googletest libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev libsimbody-dev
   liborocos-kdl-dev libdart-utils-urdf-dev
   texlive-latex-base python3 python3-sympy chromium
   pybind11-dev python3-dev python3-numpy python3-pytest python3-pandas python3-distributed
-  python3-matplotlib python3-nbclient python3-ipykernel)
+  python3-matplotlib python3-nbclient python3-ipykernel python3-yaml)
 # Node.js and npm: Debian's, unless the machine has them already (a newer Node.js, say)
 if ! command -v npm >/dev/null 2>&1; then run+=(nodejs npm); fi
 # fuzzing: clang with libFuzzer

@@ -92,10 +92,16 @@ class Model:
 
     def __init__(self, source, limits=False):
         self._model = _Model(str(source), limits)
+        self._set = {}  # parameters set by with_parameters
 
     def __reduce__(self):
-        # to another process (an executor's worker) as its text: loaded there once per process
-        return (_loaded, (self.text,))
+        # to another process (an executor's worker) as its text and the parameters set: loaded
+        # there once per process
+        return (_loaded, (self.text, tuple(self._set.items())))
+
+    def _with(self, set):
+        """The settings of one call: the parameters set on the model, then the call's own."""
+        return _settings({**self._set, **(set or {})})
 
     name = property(lambda self: self._model.name)
     reference = property(lambda self: self._model.reference)
@@ -108,10 +114,29 @@ class Model:
     @property
     def parameters(self):
         """{name: value} as the model gives them."""
-        return dict(self._model.parameters)
+        return {**dict(self._model.parameters), **self._set}
 
     def __repr__(self):
         return f"<unidyn.Model {self.name!r}: {len(self.coordinates)} coordinates>"
+
+    def with_parameters(self, **values):
+        """The same model with parameters set by name, sharing its compiled equations: nothing is
+        read or compiled again (parameters are inputs of the compiled code). A call's `set` still
+        overrides them."""
+        known = dict(self._model.parameters)
+        unknown = sorted(set(values) - set(known))
+        if unknown:
+            raise ValueError(f"no parameter {', '.join(unknown)}; the parameters are "
+                             f"{', '.join(known)}")
+        other = object.__new__(Model)
+        other._model = self._model
+        other._set = {**self._set, **{str(k): float(v) for k, v in values.items()}}
+        return other
+
+    def to_yaml(self):
+        """The model's text: the file or text it was read from, or the YAML made of the dict it
+        was built from (load(dict))."""
+        return self.text
 
     def _repr_html_(self):
         return display.model_html(self.name, self.coordinates, self.parameters, self.constraints)
@@ -132,31 +157,31 @@ class Model:
                  poses=False):
         """`unidyn simulate`: a Result. set: {name: number} of parameters, coordinates q and
         rates der(q); poses: each body's centre and Euler parameters, each particle's position."""
-        return Result(*self._model._simulate(t_end, output_step, method, rtol, _settings(set),
+        return Result(*self._model._simulate(t_end, output_step, method, rtol, self._with(set),
                                              bool(poses)))
 
     def rhs(self, q, qd, t=0.0, set=None):
         """q'' and the multipliers lambda at (t, q, q') — q and qd of n values, or (count, n)
         arrays of states (one per row, evaluated without the interpreter's lock)."""
         return self._model.rhs(np.asarray(q, dtype=float), np.asarray(qd, dtype=float), float(t),
-                               _settings(set))
+                               self._with(set))
 
     def linearize(self, at, set=None, period=None):
         """`unidyn linearize --format json`, as a dict. A driven system's point (equations that
         depend on t periodically, or period=T given) is a periodic motion: the dict has its
         "period", "A_at_t0" and "monodromy" in place of "A"."""
         return display.Analysis(json.loads(self._model._analysis(
-            "linearize", _points(at), _settings(set), 0, [], _period(period))))
+            "linearize", _points(at), self._with(set), 0, [], _period(period))))
 
     def modes(self, at, set=None, period=None):
         """`unidyn modes --format json`, as a dict (eigenvalues, shapes, stability); for a
         periodic motion the Floquet "multipliers" (re, im, modulus, exponent_re, exponent_im)."""
         return display.Analysis(json.loads(self._model._analysis(
-            "modes", _points(at), _settings(set), 0, [], _period(period))))
+            "modes", _points(at), self._with(set), 0, [], _period(period))))
 
     def equilibria(self, at=None, set=None, starts=200, cyclic=()):
         """`unidyn equilibria --format json`, as a dict."""
-        return json.loads(self._model._analysis("equilibria", _points(at), _settings(set),
+        return json.loads(self._model._analysis("equilibria", _points(at), self._with(set),
                                                 int(starts), list(cyclic)))
 
     def report(self, path=None, t_end=None, output_step=None, method=None, rtol=None, set=None):
@@ -165,7 +190,7 @@ class Model:
         `.save(path)`) that shows it inline in a notebook."""
         with tempfile.TemporaryDirectory() as scratch:
             target = os.path.join(scratch, "report.html") if path is None else str(path)
-            line = self._model._report(target, t_end, output_step, method, rtol, _settings(set))
+            line = self._model._report(target, t_end, output_step, method, rtol, self._with(set))
             with open(target, encoding="utf-8") as page:
                 text = page.read()
         if path is None:
@@ -179,22 +204,39 @@ def _period(period):
 
 
 def load(source, limits=False):
-    """A model from a file, a bundled model's name, or a model's text; `limits=True`: a URDF or
-    MJCF file's joint limits as unilateral contacts (the commands' --limits)."""
+    """A model from a file, a bundled model's name, a model's text, or a dict with the YAML's keys
+    (made into YAML text, model.to_yaml(), and read as a text is: its mistakes are named by line
+    and column of that text); `limits=True`: a URDF or MJCF file's joint limits as unilateral
+    contacts (the commands' --limits)."""
+    if isinstance(source, dict):
+        source = _yaml_text(source)
     return Model(source, limits)
+
+
+def _yaml_text(model):
+    """A model given as a dict, as YAML text (PyYAML, Debian's python3-yaml; else JSON, which
+    YAML reads): keys in the dict's order, numbers as Python writes them."""
+    try:
+        import yaml
+    except ImportError:
+        return json.dumps(model, indent=2, ensure_ascii=False) + "\n"
+    return yaml.safe_dump(model, sort_keys=False, allow_unicode=True, default_flow_style=None)
 
 
 
 @functools.lru_cache(maxsize=16)
-def _loaded(text):
-    """A model from its text, once per process (an executor's worker keeps it, compiled)."""
-    return Model(text)
+def _loaded(text, parameters=()):
+    """A model from its text, once per process (an executor's worker keeps it, compiled), with
+    parameters set by name."""
+    model = Model(text) if not parameters else _loaded(text)
+    return model.with_parameters(**dict(parameters)) if parameters else model
 
 
-def _run_chunk(text, first, runs, options):
-    """Runs (each a dict of settings) of the model given by its text: per run its index, whether
-    it succeeded, its last row, its events and why it failed. In whatever process runs it."""
-    model = _loaded(text)
+def _run_chunk(text, first, runs, options, parameters=()):
+    """Runs (each a dict of settings) of the model given by its text and the parameters set on
+    it: per run its index, whether it succeeded, its last row, its events and why it failed. In
+    whatever process runs it."""
+    model = _loaded(text, parameters)
     out = []
     for k, settings in enumerate(runs):
         try:
@@ -251,11 +293,13 @@ def sweep(model, settings, executor=None, chunk=10, t_end=None, output_step=None
     settings = [dict(s) for s in settings]
     options = {"t_end": t_end, "output_step": output_step, "method": method, "rtol": rtol}
     chunk = max(1, int(chunk))
+    parameters = tuple(model._set.items())  # set by with_parameters
     pieces = [(first, settings[first:first + chunk]) for first in range(0, len(settings), chunk)]
     if executor is None:
-        done = [_run_chunk(model.text, first, runs, options) for first, runs in pieces]
+        done = [_run_chunk(model.text, first, runs, options, parameters)
+                for first, runs in pieces]
     else:
-        futures = [executor.submit(_run_chunk, model.text, first, runs, options)
+        futures = [executor.submit(_run_chunk, model.text, first, runs, options, parameters)
                    for first, runs in pieces]
         done = [future.result() for future in futures]
     rows = [row for piece in done for row in piece]
