@@ -79,3 +79,38 @@ def test_dask_two_processes_and_a_worker_killed(serial):
         client.wait_for_workers(2, timeout=60)
         assert victim not in set(client.run(os.getpid).values())
     assert same(survived, unidyn.sweep(model, SETTINGS, t_end=30, chunk=5))
+
+
+def largest_swing(result):
+    """A reduction computed where each run is: the largest |theta1| of the run."""
+    return float(np.abs(result["theta1"]).max())
+
+
+def test_what_each_run_keeps():
+    model = unidyn.load("double-pendulum")
+    settings = SETTINGS[:6]
+    direct = [model.simulate(t_end=0.3, set=s) for s in settings]
+    # every row, bit for bit; a tidy table of one row per run and time
+    whole = unidyn.sweep(model, settings, t_end=0.3, keep="all", chunk=4)
+    for run, rows in zip(direct, whole.rows):
+        assert np.array_equal(rows, run.data)
+    table = whole.to_pandas()
+    assert len(table) == sum(len(run) for run in direct)
+    assert table[table["run"] == 5]["theta2"].tolist() == direct[5]["theta2"].tolist()
+    assert (table[table["run"] == 5]["set.m2"] == settings[5]["m2"]).all()
+    assert (table[table["run"] == 5]["set.theta1"] == settings[5]["theta1"]).all()
+    # rows at given times: the rows of those times
+    at = unidyn.sweep(model, settings, t_end=0.3, times=[0.1, 0.3])
+    for run, rows in zip(direct, at.rows):
+        assert np.array_equal(rows, run.data[[10, 30]])
+    with pytest.raises(ValueError, match="not the time of a row"):
+        unidyn.sweep(model, settings, t_end=0.3, times=[0.105])
+    # a reduction, on worker processes: only its value comes back
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(max_workers=2) as pool:
+        reduced = unidyn.sweep(model, settings, executor=pool, t_end=0.3, reduce=largest_swing)
+    assert reduced.values == [largest_swing(run) for run in direct]
+    assert reduced.to_pandas()["value"].tolist() == reduced.values
+    with pytest.raises(ValueError, match="one of"):
+        unidyn.sweep(model, settings, keep="all", reduce=largest_swing)

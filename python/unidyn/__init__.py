@@ -232,78 +232,152 @@ def _loaded(text, parameters=()):
     return model.with_parameters(**dict(parameters)) if parameters else model
 
 
-def _run_chunk(text, first, runs, options, parameters=()):
+def _kept(result, keep):
+    """What a sweep keeps of one run: ("final",) its last row (NaN where it made none); ("all",)
+    every row; ("times", ts) its rows at the times ts, which must be rows' times (the output
+    step's multiples, to 1e-9 of the span: nothing is interpolated); ("reduce", f) f(result),
+    computed where the run is."""
+    kind = keep[0]
+    if kind == "final":
+        return result.data[-1] if len(result) else np.full(len(result.columns), np.nan)
+    if kind == "all":
+        return result.data
+    if kind == "times":
+        t = result.t
+        rows = []
+        for wanted in keep[1]:
+            k = int(np.argmin(np.abs(t - wanted))) if len(t) else -1
+            if k < 0 or abs(t[k] - wanted) > 1e-9 * max(1.0, abs(t[-1] - t[0])):
+                raise ValueError(f"t = {wanted!r} is not the time of a row of this run (rows are "
+                                 "at the output step's multiples, and where events fall): give "
+                                 "times on that grid, or keep='all'")
+            rows.append(result.data[k])
+        return np.array(rows).reshape(len(rows), len(result.columns))
+    return keep[1](result)
+
+
+def _run_chunk(text, first, runs, options, parameters=(), keep=("final",)):
     """Runs (each a dict of settings) of the model given by its text and the parameters set on
-    it: per run its index, whether it succeeded, its last row, its events and why it failed. In
-    whatever process runs it."""
+    it: per run its index, whether it succeeded, what is kept of it (_kept), its events' count and
+    why it failed. In whatever process runs it: only what is kept travels back."""
     model = _loaded(text, parameters)
     out = []
     for k, settings in enumerate(runs):
         try:
             result = model.simulate(set=settings, **options)
-            last = result.data[-1] if len(result) else np.full(len(result.columns), np.nan)
-            out.append((first + k, result.ok, last, len(result.events), result.message))
         except ValueError as error:  # a start that cannot be made: that run's failure
             out.append((first + k, False, None, 0, str(error)))
+            continue
+        # (a time that is not a row's is the caller's mistake: it stops the sweep)
+        out.append((first + k, result.ok, _kept(result, keep), len(result.events),
+                    result.message))
     return out
 
 
 class SweepResult:
     """A sweep's runs in their order: the values set (.settings), whether each succeeded (.ok),
-    each one's last row (.final, a (runs, columns) array, NaN where a run made no row), its
-    events' count and why it failed. .to_pandas() is one table of all of it."""
+    its events' count (.events), why it failed (.messages), and what was kept of each (.kept):
+    by default its last row — .final, a (runs, columns) array, NaN where a run made no row —;
+    with keep="all" or times=[...] its rows (.rows, one (rows, columns) array per run, None where
+    a run made none); with reduce=f the value f gave (.values). .to_pandas() is one tidy table:
+    one row per run, or per run and time."""
 
-    def __init__(self, names, columns, settings, rows):
+    def __init__(self, names, columns, settings, rows, keep=("final",)):
         self.names, self.columns, self.settings = names, columns, settings
+        self.keep = keep[0]
         self.ok = np.array([r[1] for r in rows], dtype=bool)
-        self.final = np.array([r[2] if r[2] is not None else np.full(len(columns), np.nan)
-                               for r in rows]).reshape(len(rows), len(columns))
+        self.kept = [r[2] for r in rows]
         self.events = np.array([r[3] for r in rows], dtype=int)
         self.messages = [r[4] for r in rows]
+        if self.keep == "final":
+            self.final = np.array([k if k is not None else np.full(len(columns), np.nan)
+                                   for k in self.kept]).reshape(len(rows), len(columns))
+        elif self.keep in ("all", "times"):
+            self.rows = self.kept
+        else:
+            self.values = self.kept
 
     def __len__(self):
         return len(self.settings)
 
     def __getitem__(self, column):
-        """The last value of a column in each run."""
+        """The last value of a column in each run (keep="final")."""
+        if self.keep != "final":
+            raise KeyError(f"a column's last values are kept with keep='final' (this sweep kept "
+                           f"{self.keep!r}: see .rows or .values)")
         return self.final[:, self.columns.index(column)]
 
     def to_pandas(self):
+        """One table: the values set, ok, events and message of each run, with its last row
+        (final.<column>) or its value (value); or one row per run and kept time, the values set
+        as set.<name>, then the row's columns."""
         import pandas
 
-        table = pandas.DataFrame(self.settings)
-        table["ok"] = self.ok
-        table["events"] = self.events
-        table["message"] = self.messages
-        for k, name in enumerate(self.columns):
-            table[f"final.{name}"] = self.final[:, k]
-        return table
+        runs = pandas.DataFrame(self.settings, index=range(len(self)))
+        runs.insert(0, "run", range(len(self)))
+        runs["ok"], runs["events"], runs["message"] = self.ok, self.events, self.messages
+        if self.keep == "final":
+            for k, name in enumerate(self.columns):
+                runs[f"final.{name}"] = self.final[:, k]
+            return runs
+        if self.keep == "reduce":
+            runs["value"] = self.values
+            return runs
+        # per run and time: the values set as set.<name> (a coordinate's start and its value
+        # at t are two columns), then the row
+        runs = runs.rename(columns={name: f"set.{name}" for name in self.names})
+        pieces = [pandas.DataFrame(rows, columns=self.columns).assign(run=k)
+                  for k, rows in enumerate(self.rows) if rows is not None and len(rows)]
+        if not pieces:
+            return runs.iloc[0:0]
+        return runs.merge(pandas.concat(pieces, ignore_index=True), on="run", how="inner")
 
 
 def sweep(model, settings, executor=None, chunk=10, t_end=None, output_step=None, method=None,
-          rtol=None):
+          rtol=None, keep="final", times=None, reduce=None):
     """Runs the model once per entry of `settings` (each a {name: number} of parameters,
     coordinates q and rates der(q)), in chunks of `chunk` runs: in this process, or on any
     concurrent.futures executor or Dask distributed.Client (`executor.submit`). Each worker loads
     and compiles the model once. The result is the same, bit for bit, however the chunks were run;
     a chunk whose worker died is run again by the executor (Dask does so by itself), and each run
-    appears once, in its place."""
+    appears once, in its place.
+
+    What comes back of each run: keep="final" its last row (.final), keep="all" every row
+    (.rows), times=[t1, ...] its rows at those times (rows' times: the output step's multiples),
+    reduce=f whatever f(result) gives, computed on the worker (.values): a Monte Carlo of 10⁶ runs
+    sends back only that."""
     if not isinstance(model, Model):
         model = load(model)
     settings = [dict(s) for s in settings]
     options = {"t_end": t_end, "output_step": output_step, "method": method, "rtol": rtol}
     chunk = max(1, int(chunk))
     parameters = tuple(model._set.items())  # set by with_parameters
+    kept = _keep_spec(keep, times, reduce)
     pieces = [(first, settings[first:first + chunk]) for first in range(0, len(settings), chunk)]
     if executor is None:
-        done = [_run_chunk(model.text, first, runs, options, parameters)
+        done = [_run_chunk(model.text, first, runs, options, parameters, kept)
                 for first, runs in pieces]
     else:
-        futures = [executor.submit(_run_chunk, model.text, first, runs, options, parameters)
+        futures = [executor.submit(_run_chunk, model.text, first, runs, options, parameters, kept)
                    for first, runs in pieces]
         done = [future.result() for future in futures]
     rows = [row for piece in done for row in piece]
     if [r[0] for r in rows] != list(range(len(settings))):
         raise RuntimeError("the executor returned the runs out of order or not once each")
     names = sorted({name for s in settings for name in s})
-    return SweepResult(names, model.columns, settings, rows)
+    return SweepResult(names, model.columns, settings, rows, kept)
+
+
+def _keep_spec(keep, times, reduce):
+    """sweep's keep, times and reduce as one of _kept's specifications."""
+    if sum(x is not None for x in (times, reduce)) + (keep != "final") > 1:
+        raise ValueError("give one of keep='all', times=[...] and reduce=f")
+    if times is not None:
+        return ("times", tuple(float(t) for t in times))
+    if reduce is not None:
+        if not callable(reduce):
+            raise ValueError("reduce must be a function of a run's Result")
+        return ("reduce", reduce)
+    if keep not in ("final", "all"):
+        raise ValueError(f"keep must be 'final' or 'all', not {keep!r}")
+    return (keep,)
