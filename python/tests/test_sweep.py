@@ -3,6 +3,7 @@ runs bit for bit; a worker killed in the middle loses no run and duplicates none
 as the model's own simulate with its values."""
 
 import os
+import types
 import signal
 import threading
 import time
@@ -105,6 +106,12 @@ def test_what_each_run_keeps():
         assert np.array_equal(rows, run.data[[10, 30]])
     with pytest.raises(ValueError, match="not the time of a row"):
         unidyn.sweep(model, settings, t_end=0.3, times=[0.105])
+    # a run that failed at t = 0.15 keeps its rows before, none after (as `sweep gather --times`)
+    failed = types.SimpleNamespace(ok=False, t=direct[0].t[:16], data=direct[0].data[:16],
+                                   columns=direct[0].columns)
+    assert np.array_equal(unidyn._kept(failed, ("times", (0.1, 0.2))), direct[0].data[[10]])
+    with pytest.raises(ValueError, match="not the time of a row"):
+        unidyn._kept(failed, ("times", (0.105,)))
     # a reduction, on worker processes: only its value comes back
     from concurrent.futures import ProcessPoolExecutor
 

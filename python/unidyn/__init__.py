@@ -235,7 +235,8 @@ def _loaded(text, parameters=()):
 def _kept(result, keep):
     """What a sweep keeps of one run: ("final",) its last row (NaN where it made none); ("all",)
     every row; ("times", ts) its rows at the times ts, which must be rows' times (the output
-    step's multiples, to 1e-9 of the span: nothing is interpolated); ("reduce", f) f(result),
+    step's multiples, to 1e-9 of the span: nothing is interpolated; a run that failed has none
+    past its end); ("reduce", f) f(result),
     computed where the run is."""
     kind = keep[0]
     if kind == "final":
@@ -247,6 +248,8 @@ def _kept(result, keep):
         rows = []
         for wanted in keep[1]:
             k = int(np.argmin(np.abs(t - wanted))) if len(t) else -1
+            if not result.ok and (k < 0 or wanted > t[-1]):
+                break  # a run that failed before this time has no row there
             if k < 0 or abs(t[k] - wanted) > 1e-9 * max(1.0, abs(t[-1] - t[0])):
                 raise ValueError(f"t = {wanted!r} is not the time of a row of this run (rows are "
                                  "at the output step's multiples, and where events fall): give "

@@ -25,6 +25,11 @@ void add_sweep_command(CLI::App& app, SweepCommand& c) {
   c.plan->add_option("--modes-at", o.modes_at,
                      "NAME=VALUE of an operating point (as `unidyn modes --at`): each run also "
                      "gives the stability and eigenvalues there with its parameters");
+  c.plan
+      ->add_option("--times", o.times,
+                   "T1,T2,...: each run also keeps its rows at these times (rows' times: the "
+                   "output step's multiples)")
+      ->delimiter(',');
   c.plan->add_option("--t-end", o.t_end, "end time of every run")->check(CLI::PositiveNumber);
   c.plan->add_option("--output-step", o.output_step, "time between rows")
       ->check(CLI::PositiveNumber);
@@ -42,6 +47,8 @@ void add_sweep_command(CLI::App& app, SweepCommand& c) {
   c.gather = c.sweep->add_subcommand("gather", "One table of the results, in the runs' order");
   c.gather->add_option("manifest", o.model, "the manifest")->required();
   c.gather->add_option("--results", o.results, "the results' directory (default MANIFEST.runs)");
+  c.gather->add_flag("--times", o.rows_at_times,
+                     "one row per run and planned time (tidy): its values, ok, its row there");
   c.gather->add_option("-o,--output", o.output, "the table (default standard output)");
 
   c.emit = c.sweep->add_subcommand("emit", "Write a launcher script for the manifest");

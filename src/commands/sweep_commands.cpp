@@ -14,6 +14,7 @@
 #include "unidyn/analysis/operating_point.hpp"
 #include "unidyn/commands/model_source.hpp"
 #include "unidyn/integrate/initial_state.hpp"
+#include "unidyn/io/atomic_file.hpp"
 #include "unidyn/io/model_file.hpp"
 #include "unidyn/sweep/manifest.hpp"
 #include "unidyn/sweep/sweep_run.hpp"
@@ -24,12 +25,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A file written whole, or bad input naming it.
+// A file written whole or not at all, or bad input naming it.
 void write_text(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw std::invalid_argument("cannot write " + printable(path));
+  try {
+    write_atomically(path, text);
+  } catch (const std::runtime_error&) {
+    throw std::invalid_argument("cannot write " + printable(path));
+  }
 }
 
 // --rows A:B (either side may be left out: from the first, to the last run).
@@ -75,8 +77,10 @@ void plan_sweep_file(const SweepOptions& c, std::ostream& out) {
   for (std::size_t k = 0; k < manifest.names.size(); ++k) {
     first.emplace_back(manifest.names[k], manifest.runs.front().values[k]);
   }
-  initial_state(model.system, first);
-  simulation_options(model.system.simulate, manifest.options);
+  const SimulationStart start = initial_state(model.system, first);
+  const SimulationOptions options = simulation_options(model.system.simulate, manifest.options);
+  check_kept_times(c.times, start.t0, options.t_end, options.output_step);
+  manifest.times = c.times;
   manifest.modes_at = c.modes_at;
   parse_given_values(model.system, manifest.modes_at);
   const std::string path =
@@ -112,7 +116,9 @@ bool gather_sweep_table(const SweepOptions& c, std::ostream& out) {
   const SweepManifest manifest = read_manifest(c.model);
   const fs::path directory = results_directory(c);
   std::ostringstream table;
-  const GatherReport report = gather_sweep(manifest, manifest.sha256, directory, table);
+  const GatherReport report =
+      gather_sweep(manifest, manifest.sha256, directory, table,
+                   c.rows_at_times ? GatherTable::rows_at_times : GatherTable::final_rows);
   // at most ten run numbers, then "..."
   const auto some = [](const std::vector<std::size_t>& runs) {
     const std::vector<std::size_t> shown(

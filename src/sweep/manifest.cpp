@@ -61,6 +61,32 @@ std::uint64_t run_seed(std::uint64_t seed, std::size_t index) {
   return z ^ (z >> 31);
 }
 
+void check_kept_times(const std::vector<double>& times, double t0, double t_end,
+                      double output_step) {
+  if (times.size() > kMostKeptTimes) {
+    throw std::invalid_argument(
+        fmt::format("--times: {} times, more than {} (keep every row with "
+                    "`unidyn simulate` of the runs wanted)",
+                    times.size(), kMostKeptTimes));
+  }
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    const double t = times[k];
+    if (k > 0 && !(t > times[k - 1])) {
+      throw std::invalid_argument(
+          fmt::format("--times: {} after {}: give increasing times", t, times[k - 1]));
+    }
+    // a row's time, as the integrator's output grid makes them (nothing is interpolated)
+    const double steps = (t - t0) / output_step;
+    const bool on_grid = std::abs(steps - std::round(steps)) <= 1e-9 * std::max(1.0, steps);
+    if (!(t >= t0 && t <= t_end) || !(on_grid || t == t_end)) {
+      throw std::invalid_argument(fmt::format(
+          "--times: t = {} is not the time of a row (rows are at {} + k·{} up to {}, and at "
+          "events): give times on that grid",
+          t, t0, output_step, t_end));
+    }
+  }
+}
+
 GridAxis parse_grid_axis(const std::string& text) {
   const std::size_t eq = text.find('='), c1 = text.find(':', eq), c2 = text.find(':', c1 + 1);
   const auto bad = [&] {
@@ -180,6 +206,11 @@ std::string manifest_text(const SweepManifest& m) {
     }
     out += "]\n";
   }
+  if (!m.times.empty()) {
+    std::vector<std::string> times;
+    for (const double t : m.times) times.push_back(number(t));
+    out += fmt::format("times: [{}]\n", fmt::join(times, ", "));
+  }
   out += "runs:\n";
   for (const SweepRun& run : m.runs) {
     out += "  - [" + std::to_string(run.index) + ", " + std::to_string(run.seed);
@@ -216,6 +247,17 @@ void read_header(const std::string& path, const std::string& header, SweepManife
     m.seed = root["seed"].as<std::uint64_t>();
     m.names = root["names"].as<std::vector<std::string>>();
     if (root["modes_at"]) m.modes_at = root["modes_at"].as<std::vector<std::string>>();
+    if (root["times"]) {
+      m.times = root["times"].as<std::vector<double>>();
+      for (std::size_t k = 0; k < m.times.size(); ++k) {
+        if (!std::isfinite(m.times[k]) || (k > 0 && !(m.times[k] > m.times[k - 1])) ||
+            m.times.size() > kMostKeptTimes) {
+          throw fail(root["times"].Mark(), fmt::format("not a sweep manifest: times are at most "
+                                                       "{} increasing finite numbers",
+                                                       kMostKeptTimes));
+        }
+      }
+    }
   } catch (const YAML::Exception& e) {
     throw fail(e.mark, "not a sweep manifest: " + e.msg);
   }

@@ -90,9 +90,40 @@ std::string modes_fields(const ModesAt& at,
   }
 }
 
-// One run: its start from the manifest's values, the simulation, its result row.
+// The header of a result's rows at the manifest's times: the run, then the rows' columns.
+std::string rows_at_header(const std::vector<std::string>& columns) {
+  std::string out = "run";
+  for (const auto& c : columns) out += "," + csv_field(c);
+  return out + "\n";
+}
+
+// A run's rows at the manifest's times (increasing): the first row at each, to 1e-9 of the span
+// (as the output grid makes them); a time the run did not reach (it failed before) has none.
+class RowsAtTimes {
+ public:
+  RowsAtTimes(const std::vector<double>& times, std::size_t index, double span)
+      : times_(times), index_(index), tolerance_(1e-9 * std::max(1.0, std::abs(span))) {}
+  void offer(const std::vector<double>& row) {
+    while (next_ < times_.size() && row[0] > times_[next_] + tolerance_) ++next_;
+    if (next_ == times_.size() || std::abs(row[0] - times_[next_]) > tolerance_) return;
+    text_ += std::to_string(index_);
+    for (const double v : row) text_ += fmt::format(",{}", v);
+    text_ += "\n";
+    ++next_;
+  }
+  const std::string& text() const { return text_; }
+
+ private:
+  const std::vector<double>& times_;
+  std::size_t index_, next_ = 0;
+  double tolerance_;
+  std::string text_;
+};
+
+// One run: its start from the manifest's values, the simulation, its result row (and its rows at
+// the manifest's times).
 struct RunRow {
-  std::string text;
+  std::string text, rows_at;
   bool ok = false;
 };
 RunRow run_one(const SweepManifest& m, const SweepRun& run, const System& system,
@@ -103,11 +134,15 @@ RunRow run_one(const SweepManifest& m, const SweepRun& run, const System& system
   for (const double v : run.values) row += fmt::format(",{}", v);
   std::vector<double> last;
   SimulationSummary s;
+  const SimulationOptions options = simulation_options(system.simulate, m.options);
+  RowsAtTimes at(m.times, run.index, options.t_end);
   try {
     SimulationStart start = initial_state(system, sets);
     complete_initial_state(system, compiled, start);
-    s = simulate(system, compiled, start, simulation_options(system.simulate, m.options),
-                 [&](const std::vector<double>& values) { last = values; });
+    s = simulate(system, compiled, start, options, [&](const std::vector<double>& values) {
+      last = values;
+      at.offer(values);
+    });
   } catch (const std::exception& e) {
     // a start that cannot be made (the constraints, gimbal lock) is this run's failure
     s.ok = false;
@@ -122,7 +157,7 @@ RunRow run_one(const SweepManifest& m, const SweepRun& run, const System& system
   for (std::size_t c = 0; c < columns; ++c) {
     row += c < last.size() ? fmt::format(",{}", last[c]) : ",";
   }
-  return {row + "\n", s.ok};
+  return {row + "\n", at.text(), s.ok};
 }
 
 // The last line of a result file: the manifest (its SHA-256) and the run it was made for,
@@ -132,26 +167,44 @@ std::string result_stamp(const std::string& manifest_sha256, const SweepRun& run
                      manifest_sha256, run.index, run.seed);
 }
 
-// The header and row of the result file at `path` when it is whole and was made for this run of
-// this manifest: three lines, the row starting with the run's index and seed, then its stamp.
-// None when it is not (missing, cut short, copied from another run or from before a re-plan).
-std::optional<std::pair<std::string, std::string>> valid_result(const fs::path& path,
-                                                                const std::string& manifest_sha256,
-                                                                const SweepRun& run) {
+// A result file's parts: the header and row of its run, and (with the manifest's times) the
+// header and rows at those times, each ending with its newline.
+struct ResultParts {
+  std::string header, row, rows_at_header, rows_at;
+};
+
+// The parts of the result file at `path` when it is whole and was made for this run of this
+// manifest: the header, the row starting with the run's index and seed, with times the header of
+// the rows at them and those rows (each starting with the run's index), then the stamp. None when
+// it is not (missing, cut short, copied from another run or from before a re-plan).
+std::optional<ResultParts> valid_result(const fs::path& path, const SweepManifest& m,
+                                        const std::string& manifest_sha256, const SweepRun& run) {
   std::error_code error;
   const auto size = fs::file_size(path, error);
-  if (error || size > (1u << 20)) return std::nullopt;  // a result is one row of numbers
+  // a result is one row of numbers, and at most kMostKeptTimes more
+  if (error || size > (m.times.empty() ? 1u << 20 : 1u << 28)) return std::nullopt;
   std::ifstream in(path, std::ios::binary);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::size_t first = text.find('\n');
-  const std::size_t second = first == std::string::npos ? first : text.find('\n', first + 1);
-  if (second == std::string::npos) return std::nullopt;
-  const std::string row = text.substr(first + 1, second - first - 1);
-  if (text.substr(second + 1) != result_stamp(manifest_sha256, run) ||
-      !row.starts_with(fmt::format("{},{},", run.index, run.seed))) {
+  const std::string stamp = result_stamp(manifest_sha256, run);
+  if (!text.ends_with(stamp)) return std::nullopt;
+  std::vector<std::string> lines;  // each with its newline
+  for (std::size_t at = 0, end = 0; at < text.size() - stamp.size(); at = end + 1) {
+    end = text.find('\n', at);
+    lines.push_back(text.substr(at, end - at + 1));
+  }
+  const std::string run_start = fmt::format("{},", run.index);
+  const bool with_times = !m.times.empty();
+  if (lines.size() < (with_times ? 3u : 2u) || (!with_times && lines.size() != 2) ||
+      !lines[1].starts_with(run_start + fmt::format("{},", run.seed)) ||
+      (with_times && !lines[2].starts_with("run,"))) {
     return std::nullopt;
   }
-  return std::pair{text.substr(0, first), row};
+  ResultParts parts{lines[0], lines[1], with_times ? lines[2] : "", ""};
+  for (std::size_t k = 3; k < lines.size(); ++k) {
+    if (!lines[k].starts_with(run_start)) return std::nullopt;
+    parts.rows_at += lines[k];
+  }
+  return parts;
 }
 
 }  // namespace
@@ -190,6 +243,7 @@ ChunkReport run_sweep_rows(const SweepManifest& m, const std::string& manifest_s
   const CompiledSystem compiled(system, kane_equations(system), compile);
   const std::vector<std::string> columns = simulation_columns(system);
   const std::string header = result_header(m, columns);
+  const std::string at_header = m.times.empty() ? "" : rows_at_header(columns);
   // the operating point's modes, when asked: Lagrange's equations on the tape, as `unidyn modes`
   std::optional<CompiledSystem> lagrange;
   std::optional<ModesAt> modes;
@@ -205,13 +259,14 @@ ChunkReport run_sweep_rows(const SweepManifest& m, const std::string& manifest_s
     const fs::path path = result_path(directory, k);
     // a result made for this run of this manifest is kept; anything else there is made again
     const SweepRun& run = m.runs[k - held_from];
-    if (valid_result(path, manifest_sha256, run)) {
+    if (valid_result(path, m, manifest_sha256, run)) {
       ++report.skipped;
       continue;
     }
     const bool stale = fs::exists(path);
     const RunRow row = run_one(m, run, system, compiled, columns.size(), modes ? &*modes : nullptr);
-    write_atomically(path, header + row.text + result_stamp(manifest_sha256, run));
+    write_atomically(
+        path, header + row.text + at_header + row.rows_at + result_stamp(manifest_sha256, run));
     ++report.done;
     if (stale) {
       ++report.remade;
@@ -223,24 +278,73 @@ ChunkReport run_sweep_rows(const SweepManifest& m, const std::string& manifest_s
   return report;
 }
 
+namespace {
+
+// The largest table gather makes (it is held whole until every result is known to be valid).
+constexpr std::size_t kMostTableBytes = std::size_t{1} << 30;
+
+// The first `count` fields of a result row (numbers: no field before the message has a comma),
+// with the comma after them.
+std::string leading_fields(const std::string& row, std::size_t count) {
+  std::size_t end = 0;
+  for (std::size_t k = 0; k < count && end != std::string::npos; ++k) end = row.find(',', end + 1);
+  return row.substr(0, end == std::string::npos ? row.size() : end + 1);
+}
+
+// The tidy table's header: the run, its seed and values (set.<name>), ok, the rows' columns.
+std::string rows_at_table_header(const SweepManifest& m, const std::string& rows_at_header) {
+  std::string out = "run,seed";
+  for (const auto& name : m.names) out += "," + csv_field("set." + name);
+  return out + ",ok" + rows_at_header.substr(3);
+}
+
+// A run's lines of the tidy table: its index, seed, values and ok, then each of its rows.
+std::string rows_at_lines(const SweepManifest& m, const ResultParts& result) {
+  const std::string run = leading_fields(result.row, m.names.size() + 3);
+  std::string out;
+  for (std::size_t at = 0, end = 0; at < result.rows_at.size(); at = end + 1) {
+    end = result.rows_at.find('\n', at);
+    const std::size_t comma = result.rows_at.find(',', at);
+    out += run + result.rows_at.substr(comma + 1, end - comma);
+  }
+  return out;
+}
+
+}  // namespace
+
 GatherReport gather_sweep(const SweepManifest& m, const std::string& manifest_sha256,
-                          const fs::path& directory, std::ostream& out) {
+                          const fs::path& directory, std::ostream& out, GatherTable table) {
+  if (table == GatherTable::rows_at_times && m.times.empty()) {
+    throw std::invalid_argument(
+        "--times: the manifest keeps no rows at times (plan the sweep with --times T1,T2,...)");
+  }
   GatherReport report;
   std::string header, rows;
   for (const SweepRun& run : m.runs) {
     const fs::path path = result_path(directory, run.index);
-    const auto result = valid_result(path, manifest_sha256, run);
+    const auto result = valid_result(path, m, manifest_sha256, run);
     if (!result) {
       (fs::exists(path) ? report.stale : report.missing).push_back(run.index);
       continue;
     }
-    if (header.empty()) header = result->first + "\n";
-    rows += result->second + "\n";
+    if (table == GatherTable::final_rows) {
+      if (header.empty()) header = result->header;
+      rows += result->row;
+    } else {
+      if (header.empty()) header = rows_at_table_header(m, result->rows_at_header);
+      rows += rows_at_lines(m, *result);
+    }
+    if (rows.size() > kMostTableBytes) {
+      throw std::invalid_argument(fmt::format(
+          "the table would be over {} MiB: gather fewer times, or read the result files",
+          kMostTableBytes >> 20));
+    }
   }
   // no table from results that are not this manifest's
   if (!report.stale.empty()) return report;
   out << "# unidyn sweep of " << m.model << ", manifest sha256 " << manifest_sha256 << ", "
-      << m.runs.size() << " runs\n"
+      << m.runs.size() << " runs" << (table == GatherTable::final_rows ? "" : ", rows at times")
+      << "\n"
       << header << rows;
   return report;
 }

@@ -76,7 +76,8 @@ TEST(SweepManifest, GridTimesSamples) {
 }
 
 TEST(SweepManifest, ReadBackBitForBit) {
-  const SweepManifest m = plan({"theta=0.1:1.3:7"}, {"m=N(1,0.3)"}, 5, 99);
+  SweepManifest m = plan({"theta=0.1:1.3:7"}, {"m=N(1,0.3)"}, 5, 99);
+  m.times = {0.1, 0.3, 2};
   const std::string path = testing::TempDir() + "manifest_roundtrip.yaml";
   std::ofstream(path) << manifest_text(m);
   const SweepManifest back = read_manifest(path);
@@ -86,6 +87,7 @@ TEST(SweepManifest, ReadBackBitForBit) {
   EXPECT_EQ(back.options.output_step, 0.01);
   EXPECT_EQ(back.names, m.names);
   EXPECT_EQ(back.seed, 99u);
+  EXPECT_EQ(back.times, m.times);
   ASSERT_EQ(back.runs.size(), m.runs.size());
   for (std::size_t k = 0; k < m.runs.size(); ++k) {
     EXPECT_EQ(back.runs[k].seed, m.runs[k].seed);
@@ -160,6 +162,23 @@ TEST(SweepManifest, BadPlansRefused) {
   }
   EXPECT_THROW(plan({"a=0:1:2"}, {"a=U(0,1)"}), std::invalid_argument);           // a name twice
   EXPECT_THROW(plan({"a=0:1:10000", "b=0:1:10000"}, {}), std::invalid_argument);  // 10^8 runs
+}
+
+// Rows kept at times: a row's times only (t0 + k·step, or t_end), increasing, at most 1000.
+TEST(SweepManifest, KeptTimesAreRowsTimes) {
+  // rows of a run from 0.5 to 2 every 0.1 (0.5 + 0.1·3 is 0.8000000000000002: within 1e-9 of a
+  // step)
+  EXPECT_NO_THROW(check_kept_times({0.5, 0.8, 1.3, 2.0}, 0.5, 2.0, 0.1));
+  EXPECT_NO_THROW(check_kept_times({1.95}, 0.0, 1.95, 0.1));  // t_end, off the grid: its last row
+  for (const std::vector<double>& bad : std::vector<std::vector<double>>{
+           {0.85}, {0.4}, {2.1}, {0.8, 0.6}, {0.8, 0.8}, {0.5 + 1e-6}}) {
+    EXPECT_THROW(check_kept_times(bad, 0.5, 2.0, 0.1), std::invalid_argument) << bad.front();
+  }
+  std::vector<double> many;
+  for (int k = 0; k <= 1000; ++k) many.push_back(k * 0.001);
+  EXPECT_THROW(check_kept_times(many, 0.0, 1.0, 0.001), std::invalid_argument);
+  many.pop_back();
+  EXPECT_NO_THROW(check_kept_times(many, 0.0, 1.0, 0.001));
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -77,6 +78,63 @@ TEST(SweepRun, EachResultIsTheRunMadeDirectly) {
       << result;
 }
 
+// The text lines of `text`.
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+// Rows kept at the manifest's times are the run's own rows there (every row of the run simulated
+// here, the one at each time picked by its t): the tidy table has one line per run and time, with
+// the run's values and ok; a run that failed at its start has none.
+TEST(SweepRun, RowsAtTimesAreTheRunsOwnRows) {
+  Sweep s("double-pendulum", {"theta1=0.3:0.9:3"}, 1.0);
+  s.manifest.times = {0.0, 0.37, 1.0};
+  std::ostringstream log, table;
+  run_sweep_rows(s.manifest, "h", 0, 3, s.dir / "runs", log);
+  gather_sweep(s.manifest, "h", s.dir / "runs", table, GatherTable::rows_at_times);
+  const auto got = lines(table.str());
+  ASSERT_EQ(got.size(), 2u + 9u) << table.str();
+  EXPECT_EQ(got[1].substr(0, 33), "run,seed,set.theta1,ok,t,theta1,t");
+  const System system = load_model(s.model);
+  const CompiledSystem compiled(system, kane_equations(system));
+  for (std::size_t k = 0; k < 3; ++k) {
+    SimulationStart start = initial_state(system, {{"theta1", s.manifest.runs[k].values[0]}});
+    complete_initial_state(system, compiled, start);
+    std::vector<std::vector<double>> rows;
+    simulate(system, compiled, start, simulation_options(system.simulate, s.manifest.options),
+             [&](const std::vector<double>& row) { rows.push_back(row); });
+    for (std::size_t i = 0; i < 3; ++i) {
+      const double wanted = s.manifest.times[i];
+      const auto row = std::min_element(rows.begin(), rows.end(), [&](auto& a, auto& b) {
+        return std::abs(a[0] - wanted) < std::abs(b[0] - wanted);
+      });
+      std::string expected =
+          fmt::format("{},{},{},1", k, s.manifest.runs[k].seed, s.manifest.runs[k].values[0]);
+      for (const double v : *row) expected += fmt::format(",{}", v);
+      EXPECT_EQ(got[2 + 3 * k + i], expected);
+    }
+  }
+  // the default table is still one row per run; a failed start keeps no rows
+  std::ostringstream finals;
+  gather_sweep(s.manifest, "h", s.dir / "runs", finals);
+  EXPECT_EQ(lines(finals.str()).size(), 5u);
+  Sweep gimbal("heavy-top", {"theta=0:0.1:2"}, 0.1);
+  gimbal.manifest.times = {0.0, 0.1};
+  run_sweep_rows(gimbal.manifest, "h", 0, 2, gimbal.dir / "runs", log);
+  std::ostringstream tidy;
+  gather_sweep(gimbal.manifest, "h", gimbal.dir / "runs", tidy, GatherTable::rows_at_times);
+  const auto rows = lines(tidy.str());
+  ASSERT_EQ(rows.size(), 4u) << tidy.str();
+  EXPECT_EQ(rows[2].substr(0, 2), "1,");
+  // rows at times of a manifest planned without them: refused
+  s.manifest.times.clear();
+  EXPECT_THROW(gather_sweep(s.manifest, "h", s.dir / "runs", table, GatherTable::rows_at_times),
+               std::invalid_argument);
+}
+
 TEST(SweepRun, ChunksRunAgainOrOverlappingChangeNothing) {
   Sweep s("double-pendulum", {"theta1=0.1:1:6"}, 0.5);
   std::ostringstream log;
@@ -93,12 +151,6 @@ TEST(SweepRun, ChunksRunAgainOrOverlappingChangeNothing) {
   std::ostringstream table;
   const GatherReport gathered = gather_sweep(s.manifest, "h", s.dir / "runs", table);
   EXPECT_TRUE(gathered.missing.empty() && gathered.stale.empty());
-  const auto lines = [](const std::string& text) {
-    std::vector<std::string> out;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) out.push_back(line);
-    return out;
-  };
   const auto rows = lines(table.str());
   ASSERT_EQ(rows.size(), 8u);  // the comment, the header, six runs in order
   EXPECT_EQ(rows[0], "# unidyn sweep of " + s.model + ", manifest sha256 h, 6 runs");

@@ -17,6 +17,8 @@ struct SweepOptions {
   std::string results;  // run, gather: the results' directory (default MANIFEST.runs)
   std::vector<std::string> grid, random;  // plan: NAME=FROM:TO:COUNT, NAME=U(A,B) or N(MEAN,SD)
   std::vector<std::string> modes_at;      // plan: NAME=VALUE of an operating point
+  std::vector<double> times;              // plan: the times whose rows each run keeps
+  bool rows_at_times = false;             // gather: the table of the rows at the times
   std::size_t samples = 1;                // plan: random draws per grid point
   std::uint64_t seed = 1;                 // plan: the draws' seed
   double t_end = 0, output_step = 0, rtol = 0;
@@ -32,7 +34,8 @@ void plan_sweep_file(const SweepOptions& c, std::ostream& out);
 // `sweep run`: the chunk's runs made (the done ones skipped), their progress and a line to out.
 void run_sweep_chunk(const SweepOptions& c, std::ostream& out);
 
-// `sweep gather`: the table of the results in the runs' order (to c.output, else to out), what is
+// `sweep gather`: the table of the results in the runs' order (or of their rows at the manifest's
+// times) (to c.output, else to out), what is
 // missing or stale on standard error; whether every run had its result (a stale one: no table).
 bool gather_sweep_table(const SweepOptions& c, std::ostream& out);
 

@@ -39,6 +39,9 @@ struct SweepManifest {
   // NAME=VALUE of an operating point (as `unidyn modes --at`): when given, each run also reports
   // the eigenvalues and stability of its linearisation there, with the run's parameters.
   std::vector<std::string> modes_at;
+  // times whose rows each run keeps beside its last (`sweep gather --times`), increasing; each a
+  // row's time — the output step's multiples from the start, or t_end: nothing is interpolated
+  std::vector<double> times;
   // read_manifest: the SHA-256 of the file's bytes it read (one open file for both, so the runs
   // and the digest their results are stamped with cannot come from two versions of the file)
   std::string sha256;
@@ -83,6 +86,15 @@ struct RunRange {
 // manifest needs the memory of its own runs). Throws ModelError (file:line:column) when it is
 // not one: each run is one line `  - [index, seed, values...]`, as manifest_text writes it.
 SweepManifest read_manifest(const std::string& path, RunRange keep = {});
+
+// The most times a run keeps rows at.
+inline constexpr std::size_t kMostKeptTimes = 1000;
+
+// Throws std::invalid_argument unless `times` are at most kMostKeptTimes, increasing, and each
+// the time of a row of a run from t0 to t_end with rows every output_step: t0 + k output_step
+// (to 1e-9 of a step) or t_end.
+void check_kept_times(const std::vector<double>& times, double t0, double t_end,
+                      double output_step);
 
 // SplitMix64 of the plan's seed and a run's index.
 std::uint64_t run_seed(std::uint64_t seed, std::size_t index);

@@ -2,7 +2,8 @@
 // (`unidyn sweep gather`). Each run's result is one file, <dir>/run-<index>.csv: its index, seed
 // and values, whether it succeeded, its rows and events, the energy's relative drift (empty where
 // the energy is not conserved), why it failed, with --modes-at the stability and eigenvalues at
-// the operating point, and the last row of its simulation ("final.<column>"). A result is written
+// the operating point, and the last row of its simulation ("final.<column>"); with the manifest's
+// times, a second header (run, then the columns) and its rows at those times. A result is written
 // whole or not at all (a temporary file, synced, renamed into place), and a run whose result is
 // there is not run again: a chunk can be run twice, by two workers at once, or after a crash, and
 // the results are the same files. The model is compiled once per chunk (its parameters are
@@ -45,12 +46,18 @@ struct GatherReport {
   std::vector<std::size_t> missing, stale;
 };
 
+// Which table gather makes: one row per run (its outcome and last row), or one per run and kept
+// time (its index, seed, values as set.<name>, ok, then its row at that time: a tidy table).
+enum class GatherTable { final_rows, rows_at_times };
+
 // The results as one table on `out`: a comment line with the model, the manifest's SHA-256 and
-// the count of runs, the header of the result files, then their rows in the runs' order, the
-// missing ones left out. Nothing is written when a result is stale: a table is never made from
-// results of another manifest or run.
+// the count of runs, the header, then the runs' rows in their order, the missing ones left out.
+// Nothing is written when a result is stale: a table is never made from results of another
+// manifest or run. Throws std::invalid_argument for rows at times of a manifest without times,
+// or a table over 1 GiB.
 GatherReport gather_sweep(const SweepManifest& manifest, const std::string& manifest_sha256,
-                          const std::filesystem::path& directory, std::ostream& out);
+                          const std::filesystem::path& directory, std::ostream& out,
+                          GatherTable table = GatherTable::final_rows);
 
 // The rows [first, last) of task `task` when the runs are cut into chunks of `chunk` (the last one
 // shorter). Throws std::invalid_argument for a chunk of 0 or a task past the runs.
