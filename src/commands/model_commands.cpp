@@ -36,6 +36,7 @@
 #include "unidyn/kinematics/integrability.hpp"
 #include "unidyn/numeric/code_export.hpp"
 #include "unidyn/numeric/compiled_system.hpp"
+#include "unidyn/numeric/dependent_constraints.hpp"
 #include "unidyn/numeric/poses.hpp"
 #include "unidyn/symbolic/expansion_budget.hpp"
 #include "unidyn/symbolic/printable_text.hpp"
@@ -222,9 +223,17 @@ bool write_check(std::ostream& out, const ModelOptions& c, const LoadedModel& mo
         max_psi, max_velocity, lu.rank(), holding.size(),
         holding.size() < compiled.constraint_count() ? " (unilateral contacts apart left out)"
                                                      : "");
-    if (static_cast<std::size_t>(lu.rank()) != holding.size()) {
-      out << fmt::format("  the constraints are not independent at the initial state\n");
-      state_ok = false;
+    // dependent rows are accepted (numeric/dependent_constraints.hpp): named, not a failure
+    std::vector<std::string> dependent;
+    for (const Eigen::Index k : dependent_rows(data.constraint_matrix(holding, Eigen::all))) {
+      dependent.push_back(system.constraints[static_cast<std::size_t>(holding[k])].name);
+    }
+    if (!dependent.empty()) {
+      out << fmt::format(
+          "  note: '{}' depend{} on the constraints before them at the initial state (a "
+          "redundant row, or a singular position): the accelerations are unique, the multipliers "
+          "are not; they are given as the minimum-norm ones\n",
+          fmt::join(dependent, "', '"), dependent.size() > 1 ? "" : "s");
     }
     if (worst > kConstraintTolerance) {
       out << fmt::format(

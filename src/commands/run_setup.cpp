@@ -2,6 +2,7 @@
 #include "unidyn/commands/run_setup.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <iterator>
@@ -111,6 +112,20 @@ std::string run_figures(const System& system, const SimulationSummary& s) {
     if (s.initial_projection > 1e-10) {
       fmt::format_to(out, "  note: the initial state was moved by {:.3g} onto the constraints\n",
                      s.initial_projection);
+    }
+    if (!s.dependent_constraints.empty()) {
+      fmt::format_to(out,
+                     "  note: {} depend{} on the other constraints at the start (a redundant "
+                     "row, or a singular position): the accelerations are unique, the multipliers "
+                     "are not; they are given as the minimum-norm ones\n",
+                     fmt::format("'{}'", fmt::join(s.dependent_constraints, "', '")),
+                     s.dependent_constraints.size() > 1 ? "" : "s");
+    } else if (s.dependent_solves > 0) {
+      fmt::format_to(out,
+                     "  note: the constraints' rows were dependent at {} evaluations of the "
+                     "equations (singular positions passed): the multipliers there are the "
+                     "minimum-norm ones\n",
+                     s.dependent_solves);
     }
     for (const auto& m : s.multipliers) {
       if (m.held)

@@ -170,7 +170,8 @@ void CvodeBdf::advance(double t_limit) {
   Solver& s = *solver_;
   StepperStats& stats = mutable_stats();
   if (stats.accepted_steps + stats.rejected_steps >= options_.max_steps) {
-    throw IntegrationError(describe("more than " + std::to_string(options_.max_steps) + " steps"),
+    throw IntegrationError(describe("reached max_steps = " + std::to_string(options_.max_steps) +
+                                    " at t = " + detail::to_text(t())),
                            t());
   }
   // One internal step that does not pass t_limit.

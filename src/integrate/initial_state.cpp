@@ -3,10 +3,12 @@
 #include "unidyn/integrate/initial_state.hpp"
 
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "unidyn/integrate/simulation.hpp"
+#include "unidyn/numeric/dependent_constraints.hpp"
 #include "unidyn/numeric/number_text.hpp"
 #include "unidyn/symbolic/derivative.hpp"
 #include "unidyn/symbolic/real_value.hpp"
@@ -208,24 +210,17 @@ void complete_rates(const System& system, SimulationStart& start,
   }
 }
 
-// The rows that hold must be independent there: A q̈ = −b would have no solution or many.
-void expect_independent(const System& system, const std::vector<Eigen::Index>& rows,
-                        const CompiledSystemData& data) {
-  if (rows.empty()) return;
-  const Eigen::MatrixXd held = data.constraint_matrix(rows, Eigen::all);
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(held.transpose());
-  if (qr.rank() >= static_cast<Eigen::Index>(rows.size())) return;
-  // the rows the pivoting leaves out depend on the others
-  std::string dependent;
-  for (Eigen::Index k = qr.rank(); k < static_cast<Eigen::Index>(rows.size()); ++k) {
-    const Eigen::Index row = rows[static_cast<std::size_t>(qr.colsPermutation().indices()[k])];
-    dependent += (dependent.empty() ? "'" : ", '") +
-                 system.constraints[static_cast<std::size_t>(row)].name + "'";
+// The rows that hold and depend on those before them there (a redundant constraint, or a singular
+// configuration), by name. Accepted — the accelerations are unique and the multipliers the
+// minimum-norm ones (numeric/dependent_constraints.hpp) — and said.
+std::vector<std::string> dependent_constraints(const System& system,
+                                               const std::vector<Eigen::Index>& rows,
+                                               const CompiledSystemData& data) {
+  std::vector<std::string> dependent;
+  for (const Eigen::Index k : dependent_rows(data.constraint_matrix(rows, Eigen::all))) {
+    dependent.push_back(system.constraints[static_cast<std::size_t>(rows[k])].name);
   }
-  throw InitialStateError("the constraints are not independent at the initial state: " + dependent +
-                          " depend" + (rows.size() - qr.rank() > 1 ? "" : "s") +
-                          " on the others (a redundant constraint, or a singular "
-                          "configuration); remove it or start elsewhere");
+  return dependent;
 }
 
 // Unilateral contacts: apart or touching, not inside.
@@ -356,8 +351,9 @@ std::vector<std::string> complete_initial_state(const System& system,
   const std::vector<Eigen::Index> free_v = free_indices(start.qdot_given);
   complete_rates(system, start, rows, free_v, data);
 
-  // The state reached: the rows that hold independent, no contact inside, clear of gimbal lock.
-  expect_independent(system, rows, data);
+  // The state reached: the rows that depend on the others named, no contact inside, clear of
+  // gimbal lock.
+  start.dependent_constraints = dependent_constraints(system, rows, data);
   expect_not_inside(system, start.q, data);
   std::vector<std::string> computed =
       computed_values(system, start, free_q, free_v, q_given_values);

@@ -21,6 +21,7 @@
 #include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/integrate/rattle.hpp"
 #include "unidyn/integrate/rk4.hpp"
+#include "unidyn/numeric/dependent_constraints.hpp"
 #include "unidyn/numeric/number_text.hpp"
 #include "unidyn/rotation/euler_angles.hpp"
 #include "unidyn/symbolic/printing.hpp"
@@ -156,12 +157,20 @@ class Projector {
     // then — and for a tree the recursive algorithms solve, which form no M: its only
     // constraints are the unit norms of Euler parameters, whose M is semi-definite
     if (compiled_.recursive()) return A.transpose() * (A * A.transpose()).ldlt().solve(r);
-    Eigen::VectorXd qddot, lambda;
-    compiled_.solve(t, q, qdot, parameters_, qddot, lambda, data_);  // fills the mass matrix
+    compiled_.mass_and_forcing(t, q, qdot, parameters_, data_);
     const Eigen::LLT<Eigen::MatrixXd> llt(data_.mass_matrix);
-    const Eigen::MatrixXd MinvAt =
-        llt.info() == Eigen::Success ? Eigen::MatrixXd(llt.solve(A.transpose())) : A.transpose();
-    return MinvAt * (A * MinvAt).ldlt().solve(r);
+    if (llt.info() != Eigen::Success) {
+      return A.transpose() * (A * A.transpose()).completeOrthogonalDecomposition().solve(r);
+    }
+    const Eigen::MatrixXd MinvAt = llt.solve(A.transpose());
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(A * MinvAt);
+    const double scale = ldlt.rows() ? ldlt.vectorD().cwiseAbs().maxCoeff() : 0.0;
+    if (ldlt.info() == Eigen::Success && ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * scale) {
+      return MinvAt * ldlt.solve(r);
+    }
+    // dependent rows (redundant, a singular position): the least kinetic-energy correction with
+    // A Δ = r by Gauss's principle with no forces, the minimum-norm multipliers
+    return minimum_norm_solve(data_.mass_matrix, Eigen::VectorXd::Zero(q.size()), A, -r).qddot;
   }
 
   const CompiledSystem& compiled_;
@@ -443,6 +452,7 @@ class SimulationRun {
         first_stop_(contact_events_ + friction_events_ + impulse_events_),
         stop_sign_(system.stop_when.size(), 1.0) {
     summary_.has_energy = has_energy_column(system);
+    summary_.dependent_constraints = start.dependent_constraints;
     for (const auto& c : system.constraints) summary_.multipliers.push_back({c.name});
   }
 
@@ -467,6 +477,7 @@ class SimulationRun {
       summary_.failure_time = start_.t0;
     }
     summarize_energy();
+    summary_.dependent_solves = data_.dependent_solves;
     return std::move(summary_);
   }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <mutex>
 #include <stdexcept>
 #include <system_error>
@@ -11,6 +12,7 @@
 
 #include "unidyn/equations/friction.hpp"
 #include "unidyn/equations/kane.hpp"
+#include "unidyn/numeric/dependent_constraints.hpp"
 #include "unidyn/numeric/evaluation_form.hpp"
 #include "unidyn/numeric/ldlt.hpp"
 
@@ -608,12 +610,36 @@ void CompiledSystem::solve_with(double t, const Eigen::MatrixXd& A, const Eigen:
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(schur);
     const double scale = schur.diagonal().cwiseAbs().maxCoeff();
     if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * scale)) {
-      throw std::runtime_error("the constraints are dependent at t = " + std::to_string(t) +
-                               " (A M⁻¹ Aᵀ is singular)");
+      // dependent rows (redundant, or a singular position): Gauss's principle by the SVD
+      solve_dependent(t, A, b, qddot, lambda, data);
+      return;
     }
     lambda = ldlt.solve(-b - A * qddot);
     qddot += MinvAt * lambda;
   }
+}
+
+void CompiledSystem::solve_dependent(double t, const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                                     Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
+                                     CompiledSystemData& data) const {
+  const MinimumNormSolution s = minimum_norm_solve(data.mass_matrix, data.forcing, A, b);
+  if (s.inconsistency > kInconsistentRows) {
+    char part[32];
+    std::snprintf(part, sizeof part, "%.3g", s.inconsistency);
+    throw std::runtime_error(
+        "the constraints lose rank at t = " + std::to_string(t) + ": " + std::to_string(s.rank) +
+        " of their " + std::to_string(A.rows()) +
+        " rows are independent there (a singular position, or rows that contradict each other), "
+        "and no acceleration satisfies them all (the part of A q'' + b = 0 no multiplier reaches "
+        "is " +
+        part +
+        " of its terms); dependent rows are followed where they are consistent, but a singular "
+        "position met with rates off its branches stops the run (--method rattle, which holds "
+        "the positions themselves, may pass it)");
+  }
+  qddot = s.qddot;
+  lambda = s.lambda;
+  ++data.dependent_solves;
 }
 
 void CompiledSystem::solve_saddle_point(double t, const Eigen::MatrixXd& A,

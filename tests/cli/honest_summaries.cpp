@@ -340,5 +340,78 @@ TEST(HonestSummaries, AStiffModelUnderDopri5SaysSo) {
   }
 }
 
+// A parallelogram four-bar written with its crank angles and the coupler's, closed by two rows:
+// when the bars align (t ≈ 0.71) the rows lose rank and the accelerations off the motion's branch
+// have no solution: CVODE stops there at once (its step below the round-off of t), in under 10 000
+// steps — it used to shrink its step for minutes at N = 40 (53.7 million steps).
+TEST(HonestSummaries, AStuckRunStopsAtOnce) {
+  const std::string model = temp_path("four-bar.yaml");
+  write_file(model,
+             "unidyn: 1\nparameters: {g: 9.81}\ncoordinates: [th0, th1, ph]\nbodies:\n"
+             "  c0: {mass: 1, inertia: [0, 1/12, 1/12], rotation: {axis: [0, 0, 1], angle: th0}, "
+             "center: 0.5*c0.e1}\n"
+             "  c1: {mass: 1, inertia: [0, 1/12, 1/12], rotation: {axis: [0, 0, 1], angle: th1}, "
+             "center: '[1, 0, 0] + 0.5*c1.e1'}\n"
+             "  cp: {mass: 1, inertia: [0, 1/12, 1/12], rotation: {axis: [0, 0, 1], angle: ph}, "
+             "center: 'c0.e1 + 0.5*cp.e1'}\n"
+             "forces:\n  - gravity: -g*E2\nconstraints:\n"
+             "  - {name: x, position: cos(th0) + cos(ph) - 1 - cos(th1)}\n"
+             "  - {name: y, position: sin(th0) + sin(ph) - sin(th1)}\n"
+             "initial: {th0: pi/2, th1: pi/2, ph: 0, der(th0): -1, der(th1): -1, der(ph): 0}\n"
+             "simulate: {t_end: 20, output_step: 0.01}\n");
+  const Outcome r = run("simulate '" + model + "' --method cvode -o /dev/null");
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_TRUE(contains(r.out, "t + h = t")) << r.out;
+  // where: an instant the bars align, sin θ = 0 on the parallelogram's own motion — one degree of
+  // freedom, (2/3 + 1) θ'' = −(1 + 1) g cos θ (two cranks' and the coupler's energies) — by RK4
+  const double stop = number_after(r.out, "stopped at t = ");
+  double theta = std::acos(0.0), rate = -1.0, nearest = INFINITY;
+  const auto accel = [](double th) { return -2.0 * 9.81 * std::cos(th) / (5.0 / 3.0); };
+  for (double t = 0, h = 1e-5; t < 20; t += h) {
+    const double k1 = rate, l1 = accel(theta), k2 = rate + h / 2 * l1,
+                 l2 = accel(theta + h / 2 * k1), k3 = rate + h / 2 * l2,
+                 l3 = accel(theta + h / 2 * k2), k4 = rate + h * l3, l4 = accel(theta + h * k3);
+    const double next = theta + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+    rate += h / 6 * (l1 + 2 * l2 + 2 * l3 + l4);
+    if (std::sin(next) * std::sin(theta) <= 0) nearest = std::min(nearest, std::abs(stop - t));
+    theta = next;
+  }
+  EXPECT_LT(nearest, 1e-3) << r.out;
+  EXPECT_LT(number_after(r.out, "integrate "), 2.0) << r.out;
+  EXPECT_LT(number_after(r.out, "s; "), 10000) << r.out;
+}
+
+// A rod written twice (Ψ and 2Ψ) is a redundant row: accepted and named by `simulate` and `check`,
+// the motion that of the rod written once, and its multiplier shared as the least-norm pair
+// (λ/5, 2λ/5) of λ₁ + 2λ₂ = λ, the single rod's.
+TEST(HonestSummaries, ARedundantRowIsNamedAndItsMultiplierShared) {
+  const std::string once =
+      "unidyn: 1\nparameters: {g: 9.81}\ncoordinates: [x, y]\nparticles:\n"
+      "  P: {mass: 1, position: [x, y, 0]}\nforces:\n  - gravity: -g*E2\nconstraints:\n"
+      "  - {name: rod, position: x^2 + y^2 - 1}\n";
+  const std::string start =
+      "initial: {x: 0.6, y: -0.8, der(x): 0}\nsimulate: {t_end: 2, output_step: 0.1}\n";
+  const std::string single = temp_path("rod.yaml"), twice = temp_path("rod-twice.yaml");
+  write_file(single, once + start);
+  write_file(twice, once + "  - {name: rod_again, position: 2*(x^2 + y^2 - 1)}\n" + start);
+  const std::string a = temp_path("rod.csv"), b = temp_path("rod-twice.csv");
+  ASSERT_EQ(run("simulate '" + single + "' -o '" + a + "'").status, 0);
+  const Outcome r = run("simulate '" + twice + "' -o '" + b + "'");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_TRUE(contains(r.out, "note: 'rod_again' depends on the other constraints")) << r.out;
+  EXPECT_TRUE(contains(r.out, "minimum-norm")) << r.out;
+  const Csv one = parse_csv(read_file(a)), two = parse_csv(read_file(b));
+  ASSERT_EQ(one.rows.size(), two.rows.size());
+  for (std::size_t k = 0; k < one.rows.size(); ++k) {
+    EXPECT_NEAR(two.at(k, "y"), one.at(k, "y"), 1e-8);
+    const double lambda = one.at(k, "lambda(rod)");
+    EXPECT_NEAR(two.at(k, "lambda(rod)"), lambda / 5, 1e-8 * std::abs(lambda));
+    EXPECT_NEAR(two.at(k, "lambda(rod_again)"), 2 * lambda / 5, 1e-8 * std::abs(lambda));
+  }
+  const Outcome checked = run("check '" + twice + "'");
+  EXPECT_EQ(checked.status, 0) << checked.out;
+  EXPECT_TRUE(contains(checked.out, "note: 'rod_again' depends")) << checked.out;
+}
+
 }  // namespace
 }  // namespace unidyn

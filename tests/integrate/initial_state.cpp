@@ -210,14 +210,21 @@ TEST(InitialState, AngularVelocityOfABody) {
   EXPECT_NEAR(body.z(), 3.0, 1e-13);
 }
 
-// Two rows that say the same thing (x = 0 twice) cannot both hold with independent multipliers.
-TEST(InitialState, DependentConstraintsAreRefused) {
+// Two rows that say the same thing (x = 0 twice) are accepted, the later one named as depending on
+// the one before; two that contradict each other (x = 0, x = 1) cannot hold and are refused.
+TEST(InitialState, DependentConstraintsAreNamedAndContradictoryOnesRefused) {
   const std::string twice =
       "unidyn: 1\ncoordinates: [x, y]\nparticles:\n  P: {mass: 1, position: [x, y, 0]}\n"
       "constraints:\n  - {name: a, position: x}\n  - {name: b, position: 2*x}\n";
-  const std::string message = error_of(twice);
-  EXPECT_TRUE(contains(message, "not independent")) << message;
-  EXPECT_TRUE(contains(message, "'a'") || contains(message, "'b'")) << message;
+  EXPECT_EQ(complete(twice).start.dependent_constraints, std::vector<std::string>{"b"});
+  const std::string apart =
+      "unidyn: 1\ncoordinates: [x, y]\nparticles:\n  P: {mass: 1, position: [x, y, 0]}\n"
+      "constraints:\n  - {name: a, position: x}\n  - {name: b, position: x - 1}\n";
+  const std::string message = error_of(apart);
+  EXPECT_TRUE(contains(message, "contradict the constraints") && contains(message, "'a'"))
+      << message;
+  EXPECT_TRUE(
+      complete(apart.substr(0, apart.rfind("  - {name: b"))).start.dependent_constraints.empty());
 }
 
 TEST(InitialState, AUnilateralContactMustNotStartInside) {

@@ -50,6 +50,9 @@ struct SimulationStart {
   Eigen::VectorXd q;
   Eigen::VectorXd qdot;
   double t0 = 0.0;
+  // The constraints that depend on the others at the start (complete_initial_state: redundant
+  // rows, or a singular configuration), by name.
+  std::vector<std::string> dependent_constraints;
   // Which values were given (in initial: or with --set); the others may be computed from the
   // constraints (integrate/initial_state.hpp).
   std::vector<bool> q_given;
@@ -79,6 +82,10 @@ struct SimulationSummary {
   double max_velocity_residual = 0.0;
   // how far the given initial state was moved onto the constraint manifolds
   double initial_projection = 0.0;
+  // the constraints that depend on the others at the start (SimulationStart), and how many
+  // right-hand sides found the rows dependent (there: the minimum-norm multipliers)
+  std::vector<std::string> dependent_constraints;
+  std::size_t dependent_solves = 0;
   // per conserved quantity: its initial value c0 and max |c − c0| over the rows
   struct Drift {
     std::string name;

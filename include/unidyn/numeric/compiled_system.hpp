@@ -77,6 +77,8 @@ struct CompiledSystemData {
   Eigen::VectorXd constraint_bias;
   Eigen::VectorXd constraint_velocity_term;
   Eigen::VectorXd constraint_position;
+  // The solves that found the constraints' rows dependent (redundant, or a singular position).
+  std::size_t dependent_solves = 0;
   // Which constraints hold now (unilateral contact made or lost); empty: all of them.
   std::vector<bool> active;
   // Rough contacts: their phases (set by the caller), numbers, and the contact force on the
@@ -201,8 +203,10 @@ class CompiledSystem {
 
   CompiledSystemData make_data() const;
 
-  // q̈ and λ at (t, q, q̇). Throws std::runtime_error when M is not positive definite or the
-  // constraints are dependent (A M⁻¹ Aᵀ singular).
+  // q̈ and λ at (t, q, q̇): where the constraints' rows are dependent (A M⁻¹ Aᵀ singular:
+  // redundant rows, a singular position) the unique q̈ and the minimum-norm λ (numeric/
+  // dependent_constraints.hpp). Throws std::runtime_error when M is not positive definite or the
+  // rows are inconsistent.
   void solve(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
              Eigen::VectorXd& qddot, Eigen::VectorXd& lambda, CompiledSystemData& data) const;
 
@@ -226,6 +230,11 @@ class CompiledSystem {
   void solve_with(double t, const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
                   const Eigen::MatrixXd* C, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
                   CompiledSystemData& data) const;
+  // q̈ and the minimum-norm λ when the rows A are dependent there (numeric/
+  // dependent_constraints.hpp); throws when they are inconsistent.
+  void solve_dependent(double t, const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                       Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
+                       CompiledSystemData& data) const;
   // The full (n + rows) system when M is only semi-definite.
   void solve_saddle_point(double t, const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
                           const Eigen::MatrixXd& C, Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
