@@ -127,6 +127,12 @@ std::string run_figures(const System& system, const SimulationSummary& s) {
                      "minimum-norm ones\n",
                      s.dependent_solves);
     }
+    if (!s.hand_over.empty()) {
+      fmt::format_to(out,
+                     "  note: {}; from t = {:.6g} on, the run went on with alf (the index-3 "
+                     "augmented Lagrangian method, which holds the positions themselves)\n",
+                     s.hand_over, s.hand_over_time);
+    }
     for (const auto& m : s.multipliers) {
       if (m.held)
         fmt::format_to(out, "  lambda({}): from {:.6g} to {:.6g}\n", m.name, m.min, m.max);

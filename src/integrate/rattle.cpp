@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "unidyn/integrate/hermite.hpp"
 #include "unidyn/numeric/number_text.hpp"
 
 namespace unidyn {
@@ -94,10 +95,7 @@ void Rattle::momentum_from_state() {
 void Rattle::advance(double t_limit) {
   const auto n = static_cast<Eigen::Index>(system_.coordinate_count());
   const double t0 = t();
-  const double remaining = t_limit - t0;
-  const bool last = std::abs(remaining) <= options_.step * (1.0 + 1e-8);
-  const double h = last ? remaining : std::copysign(options_.step, remaining);
-  const double t1 = last ? t_limit : t0 + h;
+  const auto [h, t1] = fixed_step_toward(t_limit, options_.step);
   if (!have_momentum_) momentum_from_state();
   // the step as the composition's substeps γ_i h, each a RATTLE step from the last
   Eigen::VectorXd q = y().head(n), p = p_;
@@ -190,12 +188,10 @@ void Rattle::interpolate(double t, Eigen::VectorXd& y_out) const {
   const double h = this->t() - t_previous(), theta = (t - t_previous()) / h;
   const double one_minus = 1.0 - theta;
   // q: cubic Hermite with q̇ at both ends; q̇: linear
-  const double h00 = (1.0 + 2.0 * theta) * one_minus * one_minus;
-  const double h01 = theta * theta * (3.0 - 2.0 * theta);
-  const double h10 = theta * one_minus * one_minus * h, h11 = -theta * theta * one_minus * h;
+  const HermiteWeights w = cubic_hermite(theta, h);
   y_out.resize(2 * n);
-  y_out.head(n) = h00 * y_previous_.head(n) + h01 * y_end_.head(n) + h10 * y_previous_.tail(n) +
-                  h11 * y_end_.tail(n);
+  y_out.head(n) = w.h00 * y_previous_.head(n) + w.h01 * y_end_.head(n) +
+                  w.h10 * y_previous_.tail(n) + w.h11 * y_end_.tail(n);
   y_out.tail(n) = one_minus * y_previous_.tail(n) + theta * y_end_.tail(n);
 }
 

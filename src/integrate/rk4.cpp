@@ -33,10 +33,7 @@ void Rk4::advance(double t_limit) {
   const double t0 = t();
   const Eigen::VectorXd& y0 = y();
   // A full step h toward the limit, or the rest of the way when at most h (plus round-off) remains.
-  const double remaining = t_limit - t0;
-  const bool last = std::abs(remaining) <= h_ * (1.0 + 1e-8);
-  const double h = last ? remaining : std::copysign(h_, remaining);
-  const double t_new = last ? t_limit : t0 + h;
+  const auto [h, t_new] = fixed_step_toward(t_limit, h_);
 
   // First stage: f(t, y), reused from the end of the previous step when still valid.
   if (!have_derivative_) {

@@ -12,12 +12,14 @@
 
 #include "unidyn/equations/kane.hpp"
 #include "unidyn/integrate/applied_impulses.hpp"
+#include "unidyn/integrate/augmented_lagrangian.hpp"
 #include "unidyn/integrate/contacts.hpp"
 #include "unidyn/integrate/cvode.hpp"
 #include "unidyn/integrate/dormand_prince.hpp"
 #include "unidyn/integrate/dormand_prince_853.hpp"
 #include "unidyn/integrate/driver.hpp"
 #include "unidyn/integrate/friction_phases.hpp"
+#include "unidyn/integrate/hand_over.hpp"
 #include "unidyn/integrate/initial_state.hpp"
 #include "unidyn/integrate/rattle.hpp"
 #include "unidyn/integrate/rk4.hpp"
@@ -232,6 +234,14 @@ std::string failure_near_gimbal_lock(const System& system, const Eigen::VectorXd
   return gimbal_lock_stop(*body, volume, angles) + " (" + message + ")";
 }
 
+// The default method hands a run over to alf where A M⁻¹ Aᵀ's smallest pivot falls below this
+// fraction of its diagonal (about 1e-3 rad from an N four-bar's aligned position).
+constexpr double kNearSingularPosition = 1e-6;
+
+// What an index-1 method stopped at a singular position advises.
+constexpr const char* kIndex3Advice =
+    " (--method alf, which holds the positions themselves, passes it)";
+
 // The step of a fixed-step method: `step`, else output_step / 10, made a whole number of steps
 // per output interval.
 double fixed_step(const SimulationOptions& options) {
@@ -312,6 +322,7 @@ SimulationOptions simulation_options(const SimulationSettings& settings) {
   o.t_end = settings.t_end;
   o.output_step = settings.output_step;
   o.method = settings.method;
+  o.hand_over = !settings.method_chosen;
   o.rtol = settings.rtol;
   o.atol = std::min(settings.atol, settings.rtol * 1e-2);
   o.step = settings.step;
@@ -323,7 +334,10 @@ SimulationOptions simulation_options(const SimulationSettings& settings,
   SimulationOptions o = simulation_options(settings);
   if (overrides.t_end > 0) o.t_end = overrides.t_end;
   if (overrides.output_step > 0) o.output_step = overrides.output_step;
-  if (!overrides.method.empty()) o.method = overrides.method;
+  if (!overrides.method.empty()) {
+    o.method = overrides.method;
+    o.hand_over = false;
+  }
   if (overrides.rtol > 0) {
     o.rtol = overrides.rtol;
     o.atol = std::min(settings.atol, o.rtol * 1e-2);
@@ -478,6 +492,10 @@ class SimulationRun {
     }
     summarize_energy();
     summary_.dependent_solves = data_.dependent_solves;
+    if (hand_over_ && hand_over_->handed_over()) {
+      summary_.hand_over_time = hand_over_->hand_over_time();
+      summary_.hand_over = hand_over_->reason();
+    }
     return std::move(summary_);
   }
 
@@ -487,12 +505,37 @@ class SimulationRun {
   // a recoverable error and retries with a smaller step; why is said if the run fails all the
   // same.
   void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
+    const std::size_t dependent_before = data_.dependent_solves;
     try {
       compiled_.solve(t, y.head(n_), y.tail(n_), parameters_, qddot_, lambda_, data_);
     } catch (const NotFiniteState& e) {
       not_finite_ = e.what();
       dydt.setConstant(std::numeric_limits<double>::quiet_NaN());
       return;
+    } catch (const ConstraintRankLoss&) {
+      throw SingularPosition(
+          singular_position(t, false),
+          ": the index-1 equations of " + options_.method + " cannot go on there" + kIndex3Advice,
+          t);
+    }
+    // the default method hands over before the last steps toward a singular position, where its
+    // step shrinks and its accelerations lose their digits (dopri5 took 70 000 evaluations in
+    // the last 1e-4 s before one of the N four-bar's)
+    if (hand_over_ && start_.dependent_constraints.empty() &&
+        data_.pivot_ratio < kNearSingularPosition) {
+      throw SingularPosition("the constraints come near a singular position at t = " +
+                                 detail::to_text(t) + " (A M⁻¹ Aᵀ's pivots " +
+                                 detail::to_short_text(data_.pivot_ratio) + " of its diagonal)",
+                             "", t);
+    }
+    // more rows dependent than at the start: a singular position, whose branch the index-1
+    // equations cannot tell
+    if (data_.dependent_solves != dependent_before &&
+        data_.rank_deficiency > start_.dependent_constraints.size()) {
+      throw SingularPosition(singular_position(t, true),
+                             ": the index-1 equations of " + options_.method +
+                                 " cannot tell which branch the motion takes there" + kIndex3Advice,
+                             t);
     }
     dydt.head(n_) = y.tail(n_);
     dydt.tail(n_) = qddot_;
@@ -505,12 +548,56 @@ class SimulationRun {
     y << yq, yv;
   }
 
-  // The integrator the options ask for. RATTLE keeps the constraints itself (a projection would
-  // spoil its symplecticity); CVODE projects inside its step; the others after each step.
+  // The rank the constraints lost at t (a singular position), or their dependent rows'
+  // disagreement, described.
+  std::string singular_position(double t, bool consistent) const {
+    const std::size_t rows = compiled_.constraint_count();
+    const std::size_t independent = rows - data_.rank_deficiency;
+    const std::size_t at_start = rows - start_.dependent_constraints.size();
+    std::string what =
+        independent < at_start
+            ? "the constraints lose rank at t = " + detail::to_text(t) +
+                  " (a singular position: " + std::to_string(independent) + " of their " +
+                  std::to_string(rows) + " rows independent there, " + std::to_string(at_start) +
+                  " at the start)"
+            : "the constraints' dependent rows stop agreeing at t = " + detail::to_text(t) + " (" +
+                  std::to_string(independent) + " of their " + std::to_string(rows) +
+                  " rows independent, as at the start)";
+    return consistent ? what : what + ", and no acceleration satisfies them all";
+  }
+
+  // The index-3 augmented Lagrangian method: position constraints that always hold only.
+  std::unique_ptr<Stepper> make_index3_stepper() const {
+    if (contacts_.any() || friction_events_ + impulse_events_ > 0) {
+      throw std::invalid_argument(
+          "--method alf holds bilateral position constraints; this model has contacts, rough "
+          "contacts or impulses");
+    }
+    AugmentedLagrangianOptions o;
+    o.step = fixed_step(options_);
+    return std::make_unique<AugmentedLagrangian>(compiled_, start_.parameters, o);
+  }
+
+  // Whether the default method hands the run over to alf at a singular position: the method was
+  // not chosen, and alf covers the model.
+  bool hands_over() const {
+    const auto& position = compiled_.is_position_constraint();
+    return options_.hand_over && options_.method == "dopri5" && !position.empty() &&
+           std::find(position.begin(), position.end(), false) == position.end() &&
+           !contacts_.any() && friction_events_ + impulse_events_ == 0;
+  }
+
+  // The integrator the options ask for. RATTLE and alf keep the constraints themselves (a
+  // projection would spoil RATTLE's symplecticity); CVODE projects inside its step; the others
+  // after each step.
   void make_run_stepper() {
     project_ = options_.project && compiled_.constraint_count() > 0;
     inside_ = options_.method == "cvode";
     symplectic_ = options_.method.starts_with("rattle");
+    if (options_.method == "alf") {
+      stepper_ = make_index3_stepper();
+      return;
+    }
     if (symplectic_) {
       natural_.emplace(system_, kane_equations(system_));
       RattleOptions o;
@@ -525,6 +612,12 @@ class SimulationRun {
     std::function<void(double, Eigen::VectorXd&)> projection;
     if (project_ && inside_) projection = [this](double t, Eigen::VectorXd& y) { project(t, y); };
     stepper_ = make_stepper(options_, rhs, projection);
+    if (hands_over()) {
+      auto hand_over =
+          std::make_unique<HandOver>(std::move(stepper_), [this] { return make_index3_stepper(); });
+      hand_over_ = hand_over.get();
+      stepper_ = std::move(hand_over);
+    }
   }
 
   // The start y0 = (q, q̇): the contacts that hold, onto the constraint manifolds, the rough
@@ -564,7 +657,7 @@ class SimulationRun {
         throw std::runtime_error("interrupted (a signal)");
       }
       watch_euler_charts(system_, t, y, summary_);
-      if (project_ && !inside_ && !symplectic_) project(t, y);
+      if (project_ && !inside_ && !symplectic_ && stepper_->name() != "alf") project(t, y);
     };
     return callbacks;
   }
@@ -803,6 +896,8 @@ class SimulationRun {
   bool project_ = false, inside_ = false, symplectic_ = false;
   std::optional<CompiledNaturalSystem> natural_;
   std::unique_ptr<Stepper> stepper_;
+  // the default method's hand-over to alf (in stepper_), when it may take place
+  const HandOver* hand_over_ = nullptr;
 };
 
 }  // namespace

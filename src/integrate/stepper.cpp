@@ -104,6 +104,13 @@ void Stepper::accept_step(double t_new, Eigen::VectorXd& y_new) {
   ++stats_.accepted_steps;
 }
 
+Stepper::FixedStep Stepper::fixed_step_toward(double t_limit, double step) const {
+  const double remaining = t_limit - t_;
+  const bool last = std::abs(remaining) <= step * (1.0 + 1e-8);
+  return last ? FixedStep{remaining, t_limit}
+              : FixedStep{std::copysign(step, remaining), t_ + std::copysign(step, remaining)};
+}
+
 std::string Stepper::describe(std::string_view message) const {
   return std::string(name()) + ": " + std::string(message);
 }

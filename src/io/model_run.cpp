@@ -164,7 +164,10 @@ void ModelReader::read_simulate(const YAML::Node& node, System& system) {
   SimulationSettings& s = system.simulate;
   if (node["t_end"]) s.t_end = number(node["t_end"], "t_end");
   if (node["output_step"]) s.output_step = number(node["output_step"], "output_step");
-  if (node["method"]) s.method = scalar(node["method"], "method");
+  if (node["method"]) {
+    s.method = scalar(node["method"], "method");
+    s.method_chosen = true;
+  }
   if (node["rtol"]) s.rtol = number(node["rtol"], "rtol");
   if (node["atol"]) s.atol = number(node["atol"], "atol");
   if (node["step"]) s.step = number(node["step"], "step");

@@ -468,6 +468,35 @@ void CompiledSystem::mass_and_forcing(double t, StateRef q, StateRef qdot,
   data.forcing = Eigen::Map<const Eigen::VectorXd>(out.data() + n_ * n_, N);
 }
 
+void CompiledSystem::equations(double t, StateRef q, StateRef qdot,
+                               std::span<const double> parameters, CompiledSystemData& data) const {
+  if (!tree_.tree) {
+    evaluate_dynamics(t, q, qdot, parameters, data);
+    return;
+  }
+  const auto N = static_cast<Eigen::Index>(n_), Mc = static_cast<Eigen::Index>(m_);
+  const double* rows = nullptr;
+  std::vector<double> out;
+  if (tree_.tree->forms_mass_matrix()) {
+    // M by the composite-rigid-body algorithm, f by Newton–Euler, the rows from their tape
+    tree_.tree->mass_and_forcing(t, q, qdot, parameters, data.mass_matrix, data.forcing, data.tree);
+    rows = evaluate_at(dynamics_, t, q, qdot, parameters, data);
+  } else {
+    // Euler parameters: M, f, A, b of the equations (derived at the first call)
+    load_state(t, q, qdot, parameters, data);
+    out = dynamics().evaluate(std::span<const double>(data.inputs.data(), 1 + 2 * n_ + p_));
+    data.mass_matrix =
+        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+            out.data(), N, N);
+    data.forcing = Eigen::Map<const Eigen::VectorXd>(out.data() + n_ * n_, N);
+    rows = out.data() + n_ * n_ + n_;
+  }
+  data.constraint_matrix =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          rows, Mc, N);
+  data.constraint_bias = Eigen::Map<const Eigen::VectorXd>(rows + m_ * n_, Mc);
+}
+
 void CompiledSystem::solve_tree(double t, StateRef q, StateRef qdot,
                                 std::span<const double> parameters, Eigen::VectorXd& qddot,
                                 Eigen::VectorXd& lambda, CompiledSystemData& data) const {
@@ -609,8 +638,12 @@ void CompiledSystem::solve_with(double t, const Eigen::MatrixXd& A, const Eigen:
     const Eigen::MatrixXd schur = A * MinvAt;
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(schur);
     const double scale = schur.diagonal().cwiseAbs().maxCoeff();
-    if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * scale)) {
+    data.pivot_ratio = ldlt.info() == Eigen::Success && scale > 0.0
+                           ? ldlt.vectorD().cwiseAbs().minCoeff() / scale
+                           : 0.0;
+    if (!(data.pivot_ratio > 1e-12)) {
       // dependent rows (redundant, or a singular position): Gauss's principle by the SVD
+      data.pivot_ratio = 0.0;
       solve_dependent(t, A, b, qddot, lambda, data);
       return;
     }
@@ -623,10 +656,11 @@ void CompiledSystem::solve_dependent(double t, const Eigen::MatrixXd& A, const E
                                      Eigen::VectorXd& qddot, Eigen::VectorXd& lambda,
                                      CompiledSystemData& data) const {
   const MinimumNormSolution s = minimum_norm_solve(data.mass_matrix, data.forcing, A, b);
+  data.rank_deficiency = static_cast<std::size_t>(A.rows() - s.rank);
   if (s.inconsistency > kInconsistentRows) {
     char part[32];
     std::snprintf(part, sizeof part, "%.3g", s.inconsistency);
-    throw std::runtime_error(
+    throw ConstraintRankLoss(
         "the constraints lose rank at t = " + std::to_string(t) + ": " + std::to_string(s.rank) +
         " of their " + std::to_string(A.rows()) +
         " rows are independent there (a singular position, or rows that contradict each other), "
@@ -634,8 +668,8 @@ void CompiledSystem::solve_dependent(double t, const Eigen::MatrixXd& A, const E
         "is " +
         part +
         " of its terms); dependent rows are followed where they are consistent, but a singular "
-        "position met with rates off its branches stops the run (--method rattle, which holds "
-        "the positions themselves, may pass it)");
+        "position met with rates off its branches stops an index-1 method (--method alf, which "
+        "holds the positions themselves, passes it)");
   }
   qddot = s.qddot;
   lambda = s.lambda;

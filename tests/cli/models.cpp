@@ -107,7 +107,7 @@ TEST(CliModels, ModelsListsEveryBundledModel) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
   std::size_t files = 0;
-  for (const auto& entry : fs::directory_iterator(UNIDYN_MODELS_DIR)) {
+  for (const auto& entry : fs::recursive_directory_iterator(UNIDYN_MODELS_DIR)) {
     if (entry.path().extension() != ".yaml") continue;
     ++files;
     std::string title;

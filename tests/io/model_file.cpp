@@ -734,7 +734,7 @@ TEST(ModelFileErrors, SimulateSettings) {
   expect_error(simulate("output_step: 0"), 6, 25, {"output_step must be positive"});
   expect_error(simulate("output_step: -0.01"), 6, 25, {"output_step must be positive"});
   expect_error(simulate("method: euler"), 6, 20,
-               {"method must be dopri5, dop853, rk4, cvode, rattle, rattle4 or rattle6"});
+               {"method must be dopri5, dop853, rk4, cvode, rattle, rattle4, rattle6 or alf"});
   expect_error(simulate("t_end: ten"), 6, 19, {"t_end must be a number"});
   expect_error(simulate("t_end: 1e400"), 6, 19, {"t_end must be a number"});
   expect_error(simulate("t_end: .nan"), 6, 19, {"t_end must be a number"});

@@ -17,11 +17,16 @@ struct SimulationOptions {
   double t_end = 10.0;
   double output_step = 0.01;
   // one of integration_method_names: dopri5 or dop853 (Dormand–Prince 5(4) or 8(5,3)), rk4, cvode
-  // (BDF, for stiff models) or rattle, rattle4, rattle6 (symplectic, natural conservative models)
+  // (BDF, for stiff models), rattle, rattle4, rattle6 (symplectic, natural conservative models) or
+  // alf (index 3: position constraints through singular positions)
   std::string method = "dopri5";
   double rtol = 1e-10;
   double atol = 1e-12;
-  double step = 0.0;  // rk4's and rattle's step; 0: output_step / 10
+  double step = 0.0;  // rk4's, rattle's and alf's step; 0: output_step / 10
+  // The method was not chosen (dopri5 by default): a run of a model with position constraints
+  // that meets a singular position goes on with alf from there (integrate/hand_over.hpp), and
+  // says so.
+  bool hand_over = false;
   bool project = true;
   std::size_t max_steps = 100000000;
   // Asked after every step (not only at rows): true ends the run there, "interrupted" (Ctrl-C).
@@ -86,6 +91,10 @@ struct SimulationSummary {
   // right-hand sides found the rows dependent (there: the minimum-norm multipliers)
   std::vector<std::string> dependent_constraints;
   std::size_t dependent_solves = 0;
+  // The default method met a singular position and alf took the run over from hand_over_time
+  // on: why ("" when it did not).
+  std::string hand_over;
+  double hand_over_time = 0.0;
   // per conserved quantity: its initial value c0 and max |c − c0| over the rows
   struct Drift {
     std::string name;

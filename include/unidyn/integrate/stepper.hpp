@@ -66,6 +66,13 @@ class Stepper {
 
   StepperStats& mutable_stats() { return stats_; }
 
+  // A fixed-step method's next step toward t_limit: a full step h (signed), or the rest of the way
+  // when at most h (plus round-off) remains; and where it ends (t_limit exactly for the last).
+  struct FixedStep {
+    double h, t_end;
+  };
+  FixedStep fixed_step_toward(double t_limit, double step) const;
+
   // "<name>: " followed by the message, for error messages.
   std::string describe(std::string_view message) const;
 

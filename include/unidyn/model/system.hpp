@@ -185,9 +185,10 @@ struct Output {
 };
 
 // The integration methods a run may name: dopri5 and dop853 (Dormand–Prince 5(4) and 8(5,3)), rk4,
-// cvode, rattle (second order), rattle4 and rattle6 (RATTLE composed to fourth and sixth order).
-inline constexpr std::array<std::string_view, 7> integration_method_names = {
-    "dopri5", "dop853", "rk4", "cvode", "rattle", "rattle4", "rattle6"};
+// cvode, rattle (second order), rattle4 and rattle6 (RATTLE composed to fourth and sixth order),
+// alf (the index-3 augmented Lagrangian method, for position constraints).
+inline constexpr std::array<std::string_view, 8> integration_method_names = {
+    "dopri5", "dop853", "rk4", "cvode", "rattle", "rattle4", "rattle6", "alf"};
 bool is_integration_method(std::string_view name);
 // The names joined for messages ("dopri5, dop853, … or rattle6") and for --help ("dopri5 | …").
 std::string integration_methods();
@@ -197,6 +198,7 @@ struct SimulationSettings {
   double t_end = 10.0;
   double output_step = 0.01;
   std::string method = "dopri5";
+  bool method_chosen = false;  // `method:` given
   double rtol = 1e-10;
   double atol = 1e-12;
   double step = 0.0;  // fixed step of rk4; 0 means output_step / 10

@@ -79,6 +79,12 @@ struct CompiledSystemData {
   Eigen::VectorXd constraint_position;
   // The solves that found the constraints' rows dependent (redundant, or a singular position).
   std::size_t dependent_solves = 0;
+  // ... and, at the last of them, how many rows depended on the others (rows − rank).
+  std::size_t rank_deficiency = 0;
+  // The last solve's smallest pivot of A M⁻¹ Aᵀ's L D Lᵀ over its largest diagonal term (1 without
+  // constraints, 0 when the rows were dependent): near a singular position it falls like the
+  // square of the distance.
+  double pivot_ratio = 1.0;
   // Which constraints hold now (unilateral contact made or lost); empty: all of them.
   std::vector<bool> active;
   // Rough contacts: their phases (set by the caller), numbers, and the contact force on the
@@ -95,6 +101,15 @@ struct CompiledSystemData {
 // the state on its way (a trial stage, a Newton iterate inside CVODE) takes it as a step to shrink,
 // not as the end of the run (integrate/simulation.cpp).
 class NotFiniteState : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The constraints' rows lose rank at a state and no acceleration satisfies them all (a singular
+// position met with rates off its branches, or rows that contradict each other): thrown by
+// CompiledSystem::solve. An index-1 integrator cannot go on there (integrate/simulation.cpp hands
+// the run to an index-3 one, or stops with the reason).
+class ConstraintRankLoss : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
@@ -205,8 +220,8 @@ class CompiledSystem {
 
   // q̈ and λ at (t, q, q̇): where the constraints' rows are dependent (A M⁻¹ Aᵀ singular:
   // redundant rows, a singular position) the unique q̈ and the minimum-norm λ (numeric/
-  // dependent_constraints.hpp). Throws std::runtime_error when M is not positive definite or the
-  // rows are inconsistent.
+  // dependent_constraints.hpp). Throws std::runtime_error when M is not positive definite,
+  // ConstraintRankLoss when the rows are inconsistent.
   void solve(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
              Eigen::VectorXd& qddot, Eigen::VectorXd& lambda, CompiledSystemData& data) const;
 
@@ -214,6 +229,12 @@ class CompiledSystem {
   // leaves as they were when the articulated-body algorithm solved (recursive()).
   void mass_and_forcing(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
                         CompiledSystemData& data) const;
+
+  // (3.8)'s M q̈ = f + Aᵀ λ with the rows A q̈ + b = 0, unsolved, at (t, q, q̇): M, f, A, b into
+  // data.mass_matrix, forcing, constraint_matrix and constraint_bias (the index-3 integrators
+  // solve them their own way: integrate/augmented_lagrangian.hpp).
+  void equations(double t, StateRef q, StateRef qdot, std::span<const double> parameters,
+                 CompiledSystemData& data) const;
 
   // Fills data.constraint_matrix, constraint_velocity_term and constraint_position at (t, q, q̇).
   void constraints(double t, StateRef q, StateRef qdot, std::span<const double> parameters,

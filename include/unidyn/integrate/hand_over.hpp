@@ -1,0 +1,62 @@
+// The default integration of a model with position constraints: an index-1 method (dopri5, with
+// error control) until its right-hand side meets a singular position — the constraints' rows lose
+// rank, and the index-1 equations, which hold the positions only through their second derivatives,
+// cannot say which branch the motion takes — then the index-3 augmented Lagrangian method
+// (integrate/augmented_lagrangian.hpp), which holds the positions themselves, from the last
+// accepted step to the end.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "unidyn/integrate/stepper.hpp"
+
+namespace unidyn {
+
+// A singular position met by an index-1 method: thrown by its right-hand side. what() is the
+// situation followed by the consequence.
+class SingularPosition : public IntegrationError {
+ public:
+  SingularPosition(const std::string& situation, const std::string& consequence, double t)
+      : IntegrationError(situation + consequence, t), situation_(situation) {}
+  // "the constraints lose rank at t = ... (...)"
+  const std::string& situation() const { return situation_; }
+
+ private:
+  std::string situation_;
+};
+
+class HandOver final : public Stepper {
+ public:
+  // `second` makes the method that takes over (once, at the first SingularPosition).
+  HandOver(std::unique_ptr<Stepper> first, std::function<std::unique_ptr<Stepper>()> second);
+
+  // Whether the second method took over, where (the last step the first one accepted) and why
+  // (the situation of the first one's SingularPosition).
+  bool handed_over() const { return second_ != nullptr; }
+  double hand_over_time() const { return hand_over_time_; }
+  const std::string& reason() const { return reason_; }
+  // The method that takes the steps now.
+  std::string_view name() const override { return active_->name(); }
+
+ private:
+  void restart() override { pending_ = Pending::restart; }
+  void before_reset_state() override { pending_ = Pending::reset; }
+  void advance(double t_limit) override;
+  void interpolate(double t, Eigen::VectorXd& y_out) const override { active_->dense(t, y_out); }
+  // The active method at this stepper's (t, y) after a restart or a reset here.
+  void synchronize();
+
+  enum class Pending { none, restart, reset };
+  std::unique_ptr<Stepper> first_, second_;
+  std::function<std::unique_ptr<Stepper>()> make_second_;
+  Stepper* active_;
+  Pending pending_ = Pending::none;
+  bool started_ = false;
+  double hand_over_time_ = 0.0;
+  std::string reason_;
+};
+
+}  // namespace unidyn
