@@ -128,10 +128,13 @@ std::string run_figures(const System& system, const SimulationSummary& s) {
                      s.dependent_solves);
     }
     if (!s.hand_over.empty()) {
-      fmt::format_to(out,
-                     "  note: {}; from t = {:.6g} on, the run went on with alf (the index-3 "
-                     "augmented Lagrangian method, which holds the positions themselves)\n",
-                     s.hand_over, s.hand_over_time);
+      fmt::format_to(
+          out,
+          "  note: {}; alf (the index-3 augmented Lagrangian method, which holds the "
+          "positions themselves) took the run on from t = {:.6g}{}{}\n",
+          s.hand_over, s.hand_over_time,
+          s.hand_overs > 1 ? fmt::format(" (and at {} more such)", s.hand_overs - 1) : "",
+          s.handed_back ? ", dopri5 taking it back past each" : " to the end");
     }
     for (const auto& m : s.multipliers) {
       if (m.held)

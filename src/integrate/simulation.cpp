@@ -237,6 +237,8 @@ std::string failure_near_gimbal_lock(const System& system, const Eigen::VectorXd
 // The default method hands a run over to alf where A M⁻¹ Aᵀ's smallest pivot falls below this
 // fraction of its diagonal (about 1e-3 rad from an N four-bar's aligned position).
 constexpr double kNearSingularPosition = 1e-6;
+// ... and takes it back where the pivot has risen above this on the other side.
+constexpr double kSingularPositionPassed = 1e-4;
 
 // What an index-1 method stopped at a singular position advises.
 constexpr const char* kIndex3Advice =
@@ -492,9 +494,11 @@ class SimulationRun {
     }
     summarize_energy();
     summary_.dependent_solves = data_.dependent_solves;
-    if (hand_over_ && hand_over_->handed_over()) {
+    if (hand_over_ && hand_over_->hand_overs() > 0) {
       summary_.hand_over_time = hand_over_->hand_over_time();
       summary_.hand_over = hand_over_->reason();
+      summary_.hand_overs = static_cast<std::size_t>(hand_over_->hand_overs());
+      summary_.handed_back = hand_over_->hand_backs() == hand_over_->hand_overs();
     }
     return std::move(summary_);
   }
@@ -578,6 +582,20 @@ class SimulationRun {
     return std::make_unique<AugmentedLagrangian>(compiled_, start_.parameters, o);
   }
 
+  // Whether alf, after `steps` steps since it took the run over, has passed the singular
+  // position: A M⁻¹ Aᵀ's smallest pivot back above kSingularPositionPassed of its diagonal and
+  // rising (not still on the way in), four steps at least.
+  bool singular_position_passed(double t, const Eigen::VectorXd& y, int steps) {
+    if (steps == 1) pivot_ratio_before_ = 0.0;
+    try {
+      compiled_.solve(t, y.head(n_), y.tail(n_), parameters_, qddot_, lambda_, data_);
+    } catch (const std::exception&) {
+      return false;
+    }
+    const double ratio = data_.pivot_ratio, before = std::exchange(pivot_ratio_before_, ratio);
+    return steps >= 4 && ratio > kSingularPositionPassed && ratio > before;
+  }
+
   // Whether the default method hands the run over to alf at a singular position: the method was
   // not chosen, and alf covers the model.
   bool hands_over() const {
@@ -613,8 +631,11 @@ class SimulationRun {
     if (project_ && inside_) projection = [this](double t, Eigen::VectorXd& y) { project(t, y); };
     stepper_ = make_stepper(options_, rhs, projection);
     if (hands_over()) {
-      auto hand_over =
-          std::make_unique<HandOver>(std::move(stepper_), [this] { return make_index3_stepper(); });
+      auto hand_over = std::make_unique<HandOver>(
+          std::move(stepper_), [this] { return make_index3_stepper(); },
+          [this](double t, const Eigen::VectorXd& y, int steps) {
+            return singular_position_passed(t, y, steps);
+          });
       hand_over_ = hand_over.get();
       stepper_ = std::move(hand_over);
     }
@@ -898,6 +919,7 @@ class SimulationRun {
   std::unique_ptr<Stepper> stepper_;
   // the default method's hand-over to alf (in stepper_), when it may take place
   const HandOver* hand_over_ = nullptr;
+  double pivot_ratio_before_ = 0.0;
 };
 
 }  // namespace

@@ -3,7 +3,9 @@
 // rank, and the index-1 equations, which hold the positions only through their second derivatives,
 // cannot say which branch the motion takes — then the index-3 augmented Lagrangian method
 // (integrate/augmented_lagrangian.hpp), which holds the positions themselves, from the last
-// accepted step to the end.
+// accepted step through it; and the first method again once the caller finds the position passed
+// (the second method is of second order with a fixed step: the first keeps the run's tolerance
+// between singular positions).
 #pragma once
 
 #include <functional>
@@ -30,12 +32,18 @@ class SingularPosition : public IntegrationError {
 
 class HandOver final : public Stepper {
  public:
-  // `second` makes the method that takes over (once, at the first SingularPosition).
-  HandOver(std::unique_ptr<Stepper> first, std::function<std::unique_ptr<Stepper>()> second);
+  // `second` makes the method that takes over (at the first SingularPosition; it is restarted at
+  // the later ones); `passed(t, y, steps)`, asked after each of its steps (the steps it took since
+  // it took over), says when the first method may go on.
+  using Passed = std::function<bool(double, const Eigen::VectorXd&, int)>;
+  HandOver(std::unique_ptr<Stepper> first, std::function<std::unique_ptr<Stepper>()> second,
+           Passed passed);
 
-  // Whether the second method took over, where (the last step the first one accepted) and why
-  // (the situation of the first one's SingularPosition).
-  bool handed_over() const { return second_ != nullptr; }
+  // How many times the second method took over; where first (the last step the first one
+  // accepted) and why (the situation of the first one's SingularPosition).
+  int hand_overs() const { return hand_overs_; }
+  // How many times the first method took the run back.
+  int hand_backs() const { return hand_backs_; }
   double hand_over_time() const { return hand_over_time_; }
   const std::string& reason() const { return reason_; }
   // The method that takes the steps now.
@@ -43,18 +51,27 @@ class HandOver final : public Stepper {
 
  private:
   void restart() override { pending_ = Pending::restart; }
-  void before_reset_state() override { pending_ = Pending::reset; }
+  // (a restart pending takes the new state with it)
+  void before_reset_state() override {
+    if (pending_ != Pending::restart) pending_ = Pending::reset;
+  }
   void advance(double t_limit) override;
-  void interpolate(double t, Eigen::VectorXd& y_out) const override { active_->dense(t, y_out); }
+  void interpolate(double t, Eigen::VectorXd& y_out) const override { last_->dense(t, y_out); }
   // The active method at this stepper's (t, y) after a restart or a reset here.
   void synchronize();
+  // The second method from this stepper's point (the first one's last accepted step).
+  void take_over(const SingularPosition& e);
 
   enum class Pending { none, restart, reset };
   std::unique_ptr<Stepper> first_, second_;
   std::function<std::unique_ptr<Stepper>()> make_second_;
+  Passed passed_;
+  // the method taking the steps, and the one that took the last step (the dense output's)
   Stepper* active_;
+  Stepper* last_;
   Pending pending_ = Pending::none;
   bool started_ = false;
+  int hand_overs_ = 0, hand_backs_ = 0, second_steps_ = 0;
   double hand_over_time_ = 0.0;
   std::string reason_;
 };

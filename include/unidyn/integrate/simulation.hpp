@@ -24,8 +24,7 @@ struct SimulationOptions {
   double atol = 1e-12;
   double step = 0.0;  // rk4's, rattle's and alf's step; 0: output_step / 10
   // The method was not chosen (dopri5 by default): a run of a model with position constraints
-  // that meets a singular position goes on with alf from there (integrate/hand_over.hpp), and
-  // says so.
+  // that meets a singular position passes it with alf (integrate/hand_over.hpp), and says so.
   bool hand_over = false;
   bool project = true;
   std::size_t max_steps = 100000000;
@@ -91,10 +90,12 @@ struct SimulationSummary {
   // right-hand sides found the rows dependent (there: the minimum-norm multipliers)
   std::vector<std::string> dependent_constraints;
   std::size_t dependent_solves = 0;
-  // The default method met a singular position and alf took the run over from hand_over_time
-  // on: why ("" when it did not).
+  // The default method met singular positions and alf took the run through them (hand_overs
+  // times): why and where the first time ("" when it did not).
   std::string hand_over;
   double hand_over_time = 0.0;
+  std::size_t hand_overs = 0;
+  bool handed_back = false;  // the default method took the run back after the last of them
   // per conserved quantity: its initial value c0 and max |c − c0| over the rows
   struct Drift {
     std::string name;
