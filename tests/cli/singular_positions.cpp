@@ -106,9 +106,9 @@ TipError tip_error(int N, const Csv& csv) {
 }
 
 // The default method (dopri5) hands the run to alf before each aligned position and takes it back
-// past it, and says so: 20 s within the benchmark's high precision (1e-3 on the crank tip's position
-// and velocity) and far inside it (dopri5 keeps its tolerance between the 16 singular instants; alf
-// alone gives 9e-5 and 6e-4), its energy conserved through them.
+// past it, and says so: 20 s within the benchmark's high precision (1e-3 on the crank tip's
+// position and velocity) and far inside it (dopri5 keeps its tolerance between the 16 singular
+// instants; alf alone gives 9e-5 and 6e-4), its energy conserved through them.
 TEST(SingularPositions, TheDefaultMethodFollowsTheParallelogramThroughThem) {
   const std::string csv_path = temp_path("four-bar-4.csv");
   const Outcome r = run("simulate '" + four_bar_model(4) + "' -o '" + csv_path + "'");
