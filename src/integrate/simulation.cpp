@@ -532,10 +532,12 @@ class SimulationRun {
                                  detail::to_short_text(data_.pivot_ratio) + " of its diagonal)",
                              "", t);
     }
-    // more rows dependent than at the start: a singular position, whose branch the index-1
-    // equations cannot tell
+    // more rows dependent than at the start, or rows independent at the start within round-off of
+    // losing rank (CVODE spent minutes there at N = 40, each evaluation on the SVD's path): a
+    // singular position, whose branch the index-1 equations cannot tell
+    const std::size_t dependent_at_start = start_.dependent_constraints.size();
     if (data_.dependent_solves != dependent_before &&
-        data_.rank_deficiency > start_.dependent_constraints.size()) {
+        (data_.rank_deficiency > dependent_at_start || dependent_at_start == 0)) {
       throw SingularPosition(singular_position(t, true),
                              ": the index-1 equations of " + options_.method +
                                  " cannot tell which branch the motion takes there" + kIndex3Advice,
@@ -559,7 +561,10 @@ class SimulationRun {
     const std::size_t independent = rows - data_.rank_deficiency;
     const std::size_t at_start = rows - start_.dependent_constraints.size();
     std::string what =
-        independent < at_start
+        independent == rows
+            ? "the constraints come within round-off of losing rank at t = " + detail::to_text(t) +
+                  " (A M⁻¹ Aᵀ's smallest pivot below 1e-12 of its diagonal: a singular position)"
+        : independent < at_start
             ? "the constraints lose rank at t = " + detail::to_text(t) +
                   " (a singular position: " + std::to_string(independent) + " of their " +
                   std::to_string(rows) + " rows independent there, " + std::to_string(at_start) +

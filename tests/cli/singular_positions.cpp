@@ -204,6 +204,19 @@ TEST(SingularPositions, TheBundledBricardMechanismSwingsAsTheReference) {
   EXPECT_LT(number_after(r.out, "relative drift "), 1e-6) << r.out;
 }
 
+// CVODE chosen for the bundled A02 stops where the rows come within round-off of losing rank, in
+// a few hundred steps (it used to spend 248 s and 53.7 million steps there).
+TEST(SingularPositions, AChosenCvodeStopsThereAtOnce) {
+  const Outcome r = run("simulate a02-four-bar-40 --method cvode -o /dev/null");
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_TRUE(contains(r.out, "come within round-off of losing rank")) << r.out;
+  EXPECT_TRUE(contains(r.out, "--method alf")) << r.out;
+  const double stop = number_after(r.out, "stopped at t = ");
+  EXPECT_GT(stop, 0.7);
+  EXPECT_LT(stop, 0.73);
+  EXPECT_LT(number_after(r.out, "s; "), 10000) << r.out;
+}
+
 // alf holds position constraints only: a model with a velocity constraint is refused, saying so.
 TEST(SingularPositions, AlfRefusesVelocityConstraints) {
   const Outcome r = run("simulate chaplygin-car --method alf --t-end 0.1 -o /dev/null");
