@@ -772,6 +772,101 @@ print(json.dumps(out))
                          f"{r['energy_error_whole']:.1e} |")
         self.say()
 
+    # 11. Mechanisms: the IFToMM benchmark problems ------------------------------------------
+    def mechanisms(self):
+        """A02 (N four-bar, through singular positions) and A04 (Bricard's mechanism, redundant
+        rows) as whole `unidyn simulate` processes with the default method, best of 3, their
+        accuracy measured, beside OpenSim 3.2's published times."""
+        self.say("## 11. Mechanisms: the IFToMM benchmark problems\n")
+        self.say("Whole `unidyn simulate` processes (model read, cached native code, the default "
+                 "method — dopri5, alf through each singular position —, CSV of a row every "
+                 "0.01 s), best of 3. Error: the crank tip's largest error (position, velocity) "
+                 "against the exact parallelogram motion (RK4 here), and P3's against the "
+                 "benchmark's reference curve points (x = −1 at 2.5 s, y = −√3/2 and z = −1/2 at "
+                 "1.25 s). OpenSim 3.2 (Simbody RK-Feldberg, accuracy 1e-6), as published by "
+                 "RehabEngGroup/MBSbenchmarksInOpenSim on an i5-4570 at 3.2 GHz: A02 with N = 2 "
+                 "over 10 s 0.455 s, A04 over 10 s 0.258 s. Goal of issue 40: ≤ 0.05 s each.\n")
+        self.say("| problem | span | wall time | error | OpenSim 3.2 |")
+        self.say("|---|---|---|---|---|")
+        cli = os.path.join(self.build, "unidyn")
+        runs = 1 if self.quick else 3
+        cases = [("A02, N = 2", 2, 10, "0.455 s"), ("A02, N = 40", 40, 2 if self.quick else 20, "")]
+        with tempfile.TemporaryDirectory() as scratch:
+            csv = os.path.join(scratch, "run.csv")
+            for name, n, t_end, opensim in cases:
+                model = os.path.join(scratch, f"a02-{n}.yaml")
+                with open(model, "w") as f:
+                    f.write(four_bar_model(n, t_end))
+                command = [cli, "simulate", model, "-o", csv]
+                run(command, timeout=3600)  # the native code compiled and cached first
+                seconds, _ = fastest(command, runs=runs, timeout=3600)
+                position, velocity = parallelogram_error(
+                    n, csv_columns(csv, ["t", "th0", "der(th0)"]))
+                self.say(f"| {name} | {t_end} s | {seconds:.3f} s | {position:.1e}, "
+                         f"{velocity:.1e} | {opensim or '—'} |")
+            command = [cli, "simulate", "a04-bricard", "-o", csv]
+            run(command)
+            seconds, _ = fastest(command, runs=runs)
+            rows = csv_columns(csv, ["t", "P3x", "P3y", "P3z"])
+            at = lambda t: min(rows, key=lambda r: abs(r[0] - t))
+            error = max(abs(at(2.5)[1] + 1), abs(at(1.25)[2] + math.sqrt(3) / 2),
+                        abs(at(1.25)[3] + 0.5))
+            self.say(f"| A04 (Bricard) | 10 s | {seconds:.3f} s | {error:.1e} | 0.258 s |")
+        self.say()
+
+
+def four_bar_model(n, t_end):
+    """The IFToMM N four-bar (problem A02) as models/iftomm/a02-four-bar-40.yaml writes it, for
+    any N: crank and coupler angles, two closure rows per window."""
+    lines = ["unidyn: 1", f"name: N four-bar (N = {n})", "parameters: {g: 9.81}",
+             "coordinates: [" + ", ".join([f"th{i}" for i in range(n + 1)] +
+                                          [f"ph{i}" for i in range(1, n + 1)]) + "]", "bodies:"]
+    bar = "{mass: 1, inertia: [0, 1/12, 1/12], rotation: {axis: [0, 0, 1], angle: "
+    for i in range(n + 1):
+        lines.append(f"  c{i}: {bar}th{i}}}, center: '[{i}, 0, 0] + 0.5*c{i}.e1'}}")
+    for i in range(1, n + 1):
+        lines.append(f"  p{i}: {bar}ph{i}}}, center: '[{i - 1}, 0, 0] + c{i - 1}.e1 + 0.5*p{i}.e1'}}")
+    lines += ["forces:", "  - gravity: -g*E2", "constraints:"]
+    for i in range(1, n + 1):
+        lines.append(f"  - {{name: x{i}, position: cos(th{i - 1}) + cos(ph{i}) - 1 - cos(th{i})}}")
+        lines.append(f"  - {{name: y{i}, position: sin(th{i - 1}) + sin(ph{i}) - sin(th{i})}}")
+    lines.append("initial: {" + ", ".join([f"th{i}: pi/2, der(th{i}): -1" for i in range(n + 1)] +
+                                          [f"ph{i}: 0" for i in range(1, n + 1)]) + "}")
+    lines.append(f"simulate: {{t_end: {t_end}, output_step: 0.01, step: 0.0005}}")
+    return "\n".join(lines) + "\n"
+
+
+def parallelogram_error(n, rows):
+    """The largest error of the N four-bar's crank tip (position, velocity) over CSV rows (t, th0,
+    der(th0)) against its exact one-degree-of-freedom motion ((N+1)/3 + N) θ'' = −((N+1)/2 + N) g
+    cos θ, by RK4 at h = 1e-4."""
+    ratio = ((n + 1) / 2 + n) / ((n + 1) / 3 + n)
+    accel = lambda th: -ratio * 9.81 * math.cos(th)
+    theta, rate, t, position, velocity = math.pi / 2, -1.0, 0.0, 0.0, 0.0
+    for row_t, th, w in rows:
+        while t < row_t - 1e-12:
+            h = min(1e-4, row_t - t)
+            k1, l1 = rate, accel(theta)
+            k2, l2 = rate + h / 2 * l1, accel(theta + h / 2 * k1)
+            k3, l3 = rate + h / 2 * l2, accel(theta + h / 2 * k2)
+            k4, l4 = rate + h * l3, accel(theta + h * k3)
+            theta += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+            rate += h / 6 * (l1 + 2 * l2 + 2 * l3 + l4)
+            t += h
+        position = max(position, abs(math.cos(th) - math.cos(theta)),
+                       abs(math.sin(th) - math.sin(theta)))
+        velocity = max(velocity, abs(math.sin(th) * w - math.sin(theta) * rate),
+                       abs(math.cos(th) * w - math.cos(theta) * rate))
+    return position, velocity
+
+
+def csv_columns(path, names):
+    """The named columns of a CSV file, row by row."""
+    with open(path) as f:
+        header = f.readline().strip().split(",")
+        index = [header.index(name) for name in names]
+        return [tuple(float(v) for v in (line.split(",")[i] for i in index)) for line in f]
+
 
 def pendulum_model(n):
     """The n-link pendulum of MODELS.md as a model file's text."""
@@ -871,7 +966,7 @@ def main():
     failed = []
     for part in (bench.derivation, bench.right_hand_side, bench.time_to_accuracy, bench.growth,
                  bench.long_runs, bench.large_systems, bench.analysis, bench.ensembles,
-                 bench.robots, bench.micro):
+                 bench.robots, bench.micro, bench.mechanisms):
         if arguments.part and part.__name__ != arguments.part:
             continue
         start = time.perf_counter()

@@ -186,9 +186,11 @@ std::optional<ResultParts> valid_result(const fs::path& path, const SweepManifes
   std::ifstream in(path, std::ios::binary);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string stamp = result_stamp(manifest_sha256, run);
-  if (!text.ends_with(stamp)) return std::nullopt;
+  // the stamp on a line of its own: a row cut short of its newline is not whole
+  const std::size_t body = text.size() - stamp.size();
+  if (!text.ends_with(stamp) || body == 0 || text[body - 1] != '\n') return std::nullopt;
   std::vector<std::string> lines;  // each with its newline
-  for (std::size_t at = 0, end = 0; at < text.size() - stamp.size(); at = end + 1) {
+  for (std::size_t at = 0, end = 0; at < body; at = end + 1) {
     end = text.find('\n', at);
     lines.push_back(text.substr(at, end - at + 1));
   }

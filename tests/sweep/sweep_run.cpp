@@ -246,8 +246,9 @@ TEST(SweepRun, TasksCoverTheRunsOnce) {
 }
 
 // A result is kept only when it is whole and was made for its run of this manifest: results from
-// before a re-plan (another manifest hash), copied from another run, cut short or empty are made
-// again by `run`, and `gather` writes no table while one is there.
+// before a re-plan (another manifest hash), copied from another run, cut short (also of the last
+// row's newline alone) or empty are made again by `run`, and `gather` writes no table while one is
+// there.
 TEST(SweepRun, StaleOrBrokenResultsAreMadeAgainAndNeverGathered) {
   Sweep s("double-pendulum", {"theta1=0.1:0.4:4"}, 0.1);
   std::ostringstream log;
@@ -262,16 +263,20 @@ TEST(SweepRun, StaleOrBrokenResultsAreMadeAgainAndNeverGathered) {
   EXPECT_EQ(remade.done, 4u);
   EXPECT_EQ(remade.remade, 4u);
   EXPECT_EQ(remade.skipped, 0u);
-  // run 1's result copied over run 2's, run 3's cut short, run 0's emptied
+  // run 1's result copied over run 2's, run 3's cut short, run 0's emptied, run 1's row cut of its
+  // newline (the stamp whole after it)
   fs::copy_file(result_path(runs, 1), result_path(runs, 2), fs::copy_options::overwrite_existing);
   const std::string whole = read(result_path(runs, 3));
   std::ofstream(result_path(runs, 3), std::ios::trunc) << whole.substr(0, whole.size() / 2);
   std::ofstream(result_path(runs, 0), std::ios::trunc);
+  std::string one = read(result_path(runs, 1));
+  one.erase(one.rfind("\n# unidyn sweep result"), 1);
+  std::ofstream(result_path(runs, 1), std::ios::trunc) << one;
   EXPECT_EQ(gather_sweep(s.manifest, "new", runs, table).stale,
-            (std::vector<std::size_t>{0, 2, 3}));
+            (std::vector<std::size_t>{0, 1, 2, 3}));
   const ChunkReport again = run_sweep_rows(s.manifest, "new", 0, 4, runs, log);
-  EXPECT_EQ(again.remade, 3u);
-  EXPECT_EQ(again.skipped, 1u);
+  EXPECT_EQ(again.remade, 4u);
+  EXPECT_EQ(again.skipped, 0u);
   EXPECT_EQ(read(result_path(runs, 3)), whole);
   const GatherReport gathered = gather_sweep(s.manifest, "new", runs, table);
   EXPECT_TRUE(gathered.stale.empty() && gathered.missing.empty());
